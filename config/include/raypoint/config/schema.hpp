@@ -1,0 +1,55 @@
+#pragma once
+// The one schema of every setting (DEVELOPERS.md rule 4): section, key, type, default, range and
+// a one-line doc. Parsing (--set, INI), validation, print-config and the docs all come from it.
+
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "raypoint/config/config.hpp"
+
+namespace raypoint::config {
+
+enum class ValueType { integer, real, boolean, choice };
+
+struct Key {
+    std::string_view section;
+    std::string_view name;
+    ValueType type;
+    double min = 0.0;  // integer and real
+    double max = 0.0;
+    std::vector<std::string_view> choices;  // choice
+    std::string_view doc;
+    std::function<std::string(const Config&)> format;
+    // Sets the value from text; returns the reason when the text is not a valid value.
+    std::function<std::optional<std::string>(Config&, std::string_view)> parse;
+
+    std::string full_name() const;   // "section.name"
+    std::string allowed() const;     // "16..256", "true|false", "ray|raster"
+};
+
+const std::vector<Key>& schema();
+const Key* find_key(std::string_view section, std::string_view name) noexcept;
+// The valid "section.name" closest to `wanted` by edit distance, for "did you mean".
+std::string nearest_key(std::string_view wanted);
+
+// A setting that cannot be applied. The message is complete and ready to print.
+class ConfigError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Applies "section.key=value" (the --set option). Throws ConfigError:
+// "--set tracking.min_area=2: value out of range (allowed: 0..1)".
+void apply_assignment(Config& config, std::string_view assignment);
+
+// Rules that involve more than one key (min_area < max_area, ...): one message each.
+std::vector<std::string> cross_check(const Config& config);
+
+// The configuration as a valid INI file with each key's doc and range as comments.
+std::string to_ini(const Config& config);
+
+}  // namespace raypoint::config

@@ -1,0 +1,54 @@
+#pragma once
+// Object projection feature estimation (paper section 3): from a binary edge image and a point
+// inside the target's projection (the inner point), estimate the projection's centroid and area
+// and move the inner point to where it is likeliest to stay inside in the next frame.
+
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "raypoint/core/settings.hpp"
+
+namespace raypoint::core {
+
+// Everything in working-image pixels (pixel centres at integer coordinates).
+struct Estimate {
+    cv::Point2f centroid;
+    double area = 0.0;  // square working pixels
+    cv::Point2f inner;  // the relocated inner point
+    int iterations = 0;
+};
+
+// One cast ray, kept for drawing (--annotate) and for tests.
+struct RaySegment {
+    cv::Point2f from;
+    cv::Point2f to;
+};
+
+// What an estimator leaves behind besides its Estimate, for annotation.
+struct EstimatorTrace {
+    std::vector<RaySegment> rays;          // the last iteration's rays
+    std::vector<unsigned char> blocks;     // raster only: selected blocks, row-major, 0 or 1
+    int blocks_wide = 0;
+    int blocks_high = 0;
+    int block_size = 0;
+};
+
+class Estimator {
+public:
+    virtual ~Estimator() = default;
+    // edges: CV_8U, non-zero where there is an edge. Does not allocate once warmed up on a
+    // given image size.
+    virtual Estimate estimate(const cv::Mat& edges, cv::Point2f inner) noexcept = 0;
+    virtual const EstimatorTrace& trace() const noexcept = 0;
+};
+
+std::unique_ptr<Estimator> make_estimator(const EstimatorSettings& settings);
+
+// "ray", "iterative-ray", "iterative-ny-ray", "raster".
+std::string_view to_string(EstimatorKind kind) noexcept;
+bool estimator_from_string(std::string_view name, EstimatorKind& kind) noexcept;
+
+}  // namespace raypoint::core

@@ -1,0 +1,72 @@
+#pragma once
+// Frame preprocessing (paper 4.1): Poisson-disk filter, subsampling to the working size, Sobel
+// edge image, brightness-compensated absolute difference and the global movement value.
+
+#include <array>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "raypoint/core/frame.hpp"
+#include "raypoint/core/settings.hpp"
+
+namespace raypoint::core {
+
+// Offsets of the Poisson-disk filter's taps in a unit disk: a fixed, deterministic sample set
+// (best-candidate sampling, minimum spacing about 0.45 radius) including the centre.
+const std::vector<cv::Point2f>& poisson_disk_taps();
+
+// The brightness compensation of paper 4.1: the largest of the `minima` smallest distinct values
+// present in `difference` (0 when there are fewer distinct values than that is impossible: then
+// the largest present value). Histogram based, so O(pixels) and no sorting.
+int brightness_offset(const cv::Mat& difference, int minima) noexcept;
+
+class Preprocessor {
+public:
+    explicit Preprocessor(const PreprocessSettings& settings);
+
+    // Returns false for a frame the core cannot read (null data, odd YUYV width, stride too
+    // small, smaller than the working size): the frame is skipped, nothing changes.
+    bool process(const FrameView& frame) noexcept;
+
+    const cv::Mat& color() const noexcept { return color_[current_]; }    // CV_8UC3
+    const cv::Mat& previous_color() const noexcept { return color_[1 - current_]; }
+    const cv::Mat& gray() const noexcept { return gray_[current_]; }      // CV_8U
+    const cv::Mat& magnitude() const noexcept { return magnitude_; }     // CV_8U Sobel magnitude
+    const cv::Mat& edges() const noexcept { return edges_; }             // CV_8U 1 = edge
+    const cv::Mat& difference() const noexcept { return difference_; }   // CV_8U compensated
+    bool has_previous() const noexcept { return processed_ >= 2; }
+    // Sum of the compensated difference over the working pixels (paper 4.1 "global inter-frame
+    // movement value"; the paper's average times the pixel count, see docs/settings.md).
+    double movement() const noexcept { return movement_; }
+    int brightness_offset_applied() const noexcept { return offset_; }
+
+private:
+    void prepare(const FrameView& frame);
+    void filter_bgr(const FrameView& frame) noexcept;
+    void filter_yuyv(const FrameView& frame) noexcept;
+    void compute_edges() noexcept;
+    void compute_difference() noexcept;
+
+    PreprocessSettings settings_;
+    int input_width_ = 0;
+    int input_height_ = 0;
+    PixelFormat input_format_ = PixelFormat::bgr;
+    // Per tap, the clamped input column (in pixels) and row of each working column and row.
+    std::vector<std::vector<int>> tap_columns_;
+    std::vector<std::vector<int>> tap_rows_;
+    std::vector<std::array<unsigned, 3>> accumulator_;  // one working row
+    std::array<cv::Mat, 2> color_;
+    std::array<cv::Mat, 2> gray_;
+    int current_ = 0;
+    long processed_ = 0;
+    cv::Mat sobel_x_;
+    cv::Mat sobel_y_;
+    cv::Mat magnitude_;
+    cv::Mat edges_;
+    cv::Mat difference_;
+    double movement_ = 0.0;
+    int offset_ = 0;
+};
+
+}  // namespace raypoint::core

@@ -1,0 +1,92 @@
+#pragma once
+// Every tunable of the tracking core, as plain data. Defaults are the paper's numbers unless the
+// comment says otherwise; config/schema.cpp is the one place that names, ranges and documents
+// them, and docs/settings.md explains each deviation from the paper.
+
+namespace raypoint::core {
+
+enum class EdgeSource {
+    luma,         // Sobel on the grey image (paper 4.1)
+    max_channel,  // strongest of the per-channel Sobel magnitudes: keeps colour-only contrast
+};
+
+enum class SearchWeighting {
+    all,     // centre of mass over every pixel of the difference image (paper 4.2)
+    strong,  // only pixels at or above a fraction of the strongest difference
+};
+
+enum class EstimatorKind {
+    ray,               // n-ray casting (paper 3.1)
+    iterative_ray,     // iterative n-ray casting (3.2)
+    iterative_ny_ray,  // iterative n^y-ray casting (3.3)
+    raster,            // iterative n^y-ray casting with m-rasterization (3.4)
+};
+
+enum class AreaMode {
+    blocks,   // area = selected blocks x m^2, centroid = mean block centre (paper 3.4)
+    refined,  // pixels of the selected blocks reachable from the rays without crossing an edge
+};
+
+enum class SmoothingKind {
+    ema,       // new = w * old + (1 - w) * estimate, once a frame (paper 4.3)
+    one_euro,  // Casiez, Roussel & Vogel 2012: adaptive low-pass on frame time
+};
+
+struct PreprocessSettings {
+    int work_width = 160;  // the paper's 160x120 working image
+    int work_height = 120;
+    // Poisson-disk filter radius in pixels of a 640-wide input; scaled with the input width so
+    // that the filter always spans the same part of the scene whatever the camera's size.
+    double filter_radius = 5.0;
+    int edge_threshold = 128;  // edge pixel when the Sobel magnitude is over this
+    EdgeSource edge_source = EdgeSource::max_channel;
+    int compensation_minima = 10;  // distinct minima of the difference image (paper 4.1)
+};
+
+struct EstimatorSettings {
+    EstimatorKind kind = EstimatorKind::raster;
+    int rays = 16;              // n
+    int recasts = 2;            // y: levels of casting; n^y rays in the last level
+    int block_size = 8;         // m, in working pixels
+    int max_iterations = 10;    // the paper gives no number
+    double tolerance = 0.5;     // working pixels; "negligible adjustment"
+    AreaMode area_mode = AreaMode::refined;
+};
+
+struct TrackingSettings {
+    double startup_seconds = 2.0;  // INITIALIZING: the camera's auto-exposure settles
+    // Movement thresholds are sums of the compensated difference image over the paper's
+    // 19,200 working pixels (averages of 3 and 0.25); Tracker scales them to the working size.
+    double search_threshold = 57600.0;
+    double idle_threshold = 4800.0;
+    double idle_seconds = 2.0;         // TRACKING fails after this long below idle_threshold
+    bool keep_still_target = true;     // a still target stays tracked while its colour validates
+    double min_area = 0.02;            // fractions of the frame (paper 4.2)
+    double max_area = 0.60;
+    SearchWeighting search_weighting = SearchWeighting::strong;
+    double strong_fraction = 0.5;      // for SearchWeighting::strong: share of the maximum
+    int color_patch = 5;               // side of the colour-match square, working pixels
+    int color_tolerance = 90;          // sum of |channel difference| of the patch means
+    int recovery_near = 10;            // recovery offsets, working pixels
+    int recovery_far = 20;
+};
+
+struct OutputSettings {
+    SmoothingKind smoothing = SmoothingKind::ema;
+    double ema_weight = 0.9;           // weight of the old value
+    double one_euro_min_cutoff = 1.0;  // Hz
+    double one_euro_beta = 0.5;
+    double one_euro_d_cutoff = 1.0;    // Hz
+};
+
+struct Settings {
+    PreprocessSettings preprocess;
+    EstimatorSettings estimator;
+    TrackingSettings tracking;
+    OutputSettings output;
+};
+
+// The paper's system exactly: every deviation above switched back to what the paper says.
+Settings paper_settings();
+
+}  // namespace raypoint::core

@@ -1,0 +1,86 @@
+#pragma once
+// The tracking system's state machine (paper 4.2), one handler a state. It sees frames only
+// through FrameEvidence, so transcript tests drive it with scripted features and the Tracker
+// with real images; docs/state-machine.md is its diagram and must change with it.
+
+#include <optional>
+
+#include <opencv2/core.hpp>
+
+#include "raypoint/core/estimator.hpp"
+#include "raypoint/core/frame.hpp"
+#include "raypoint/core/settings.hpp"
+#include "raypoint/core/tracker_state.hpp"
+
+namespace raypoint::core {
+
+// What the state machine may ask of the current frame. Points are in working pixels.
+class FrameEvidence {
+public:
+    virtual ~FrameEvidence() = default;
+    // Global inter-frame movement, summed over the working pixels.
+    virtual double movement() const noexcept = 0;
+    // SEARCHING: the centre of mass of the difference image, if it has any mass.
+    virtual std::optional<cv::Point2f> detect() noexcept = 0;
+    virtual Estimate estimate(cv::Point2f inner) noexcept = 0;
+    // Mean BGR of the colour_patch square centred at `at`, in this frame or the previous one.
+    virtual cv::Vec3f current_color(cv::Point2f at) const noexcept = 0;
+    virtual cv::Vec3f previous_color(cv::Point2f at) const noexcept = 0;
+};
+
+// What one frame did to the state machine.
+struct StepResult {
+    TrackerState state = TrackerState::initializing;  // after the frame
+    bool has_target = false;
+    bool area_known = false;  // false on the frame a search picks a target (paper 4.2)
+    Estimate estimate;        // valid when has_target; working pixels
+    bool acquired = false;    // SEARCHING picked a new target this frame
+    bool recovered = false;   // RECOVERING succeeded this frame
+    bool lost = false;        // the target was dropped this frame
+    int iterations = 0;
+};
+
+class StateMachine {
+public:
+    StateMachine(const TrackingSettings& settings, cv::Size working_size);
+
+    StepResult step(Timestamp timestamp, FrameEvidence& evidence) noexcept;
+    TrackerState state() const noexcept { return state_; }
+
+    // Sum of |channel difference| of two patch means; colours match at or below the tolerance.
+    static float color_distance(cv::Vec3f a, cv::Vec3f b) noexcept;
+
+private:
+    // Each handler returns true when it has finished the frame; false passes the same frame on
+    // to the state it switched to (TRACKING -> VALIDATING -> RECOVERING happen in one frame).
+    bool on_initializing() noexcept;
+    bool on_searching() noexcept;
+    bool on_tracking() noexcept;
+    bool on_validating() noexcept;
+    bool on_recovering() noexcept;
+
+    bool area_in_range(double area) const noexcept;
+    bool still_too_long() const noexcept;
+    void drop_target() noexcept;
+    void accept(const Estimate& estimate) noexcept;
+
+    TrackingSettings settings_;
+    cv::Size working_size_;
+    double working_area_;
+    double search_threshold_;  // scaled to the working size
+    double idle_threshold_;
+
+    TrackerState state_ = TrackerState::initializing;
+    std::optional<Timestamp> started_at_;
+    std::optional<Timestamp> still_since_;
+    cv::Point2f inner_;            // the inner point after the previous frame
+    Estimate candidate_;           // TRACKING's estimate, waiting for VALIDATING
+    cv::Vec3f reference_color_;    // the target's colour the last time it moved
+
+    // The frame being stepped.
+    Timestamp now_ = 0;
+    FrameEvidence* evidence_ = nullptr;
+    StepResult result_;
+};
+
+}  // namespace raypoint::core

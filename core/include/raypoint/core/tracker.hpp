@@ -1,0 +1,63 @@
+#pragma once
+// The paper's whole system (section 4): frames with timestamps in, the target's projection
+// features, the tracker state and a smoothed 3D position out.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include <opencv2/core.hpp>
+
+#include "raypoint/core/estimator.hpp"
+#include "raypoint/core/frame.hpp"
+#include "raypoint/core/settings.hpp"
+#include "raypoint/core/tracker_state.hpp"
+
+namespace raypoint::core {
+
+// Everything a frame produced. Fractions are of the input frame's width, height and area, so
+// they do not depend on the working size or the camera's size.
+struct FrameResult {
+    std::int64_t frame = 0;
+    Timestamp timestamp = 0;
+    TrackerState state = TrackerState::initializing;  // after this frame
+    bool has_target = false;
+    cv::Point2d centroid;  // fractions; valid when has_target
+    std::optional<double> area;  // fraction; unknown on the frame a search picks a target
+    cv::Point2d inner;     // fractions; valid when has_target
+    bool has_position = false;
+    cv::Point3d position;  // smoothed x, y (fractions) and z (paper 4.3), when has_position
+    double movement = 0.0;  // global inter-frame movement: sum of the compensated difference
+    int iterations = 0;     // estimator iterations spent on this frame
+    bool recovered = false;  // RECOVERING ran this frame and succeeded
+    bool lost = false;       // the target was dropped this frame
+};
+
+// The images of the last processed frame, for drawing and tests (working size).
+struct TrackerImages {
+    const cv::Mat& color;       // CV_8UC3 BGR, Poisson-filtered and subsampled
+    const cv::Mat& edges;       // CV_8U Sobel magnitude
+    const cv::Mat& difference;  // CV_8U compensated absolute difference
+    const EstimatorTrace& trace;
+};
+
+class Tracker {
+public:
+    explicit Tracker(const Settings& settings);
+    ~Tracker();
+    Tracker(const Tracker&) = delete;
+    Tracker& operator=(const Tracker&) = delete;
+
+    // Processes one frame. Never throws; does not allocate in steady state (same frame size).
+    // Frames must come in timestamp order.
+    FrameResult process(const FrameView& frame) noexcept;
+
+    TrackerImages images() const noexcept;
+    const Settings& settings() const noexcept;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace raypoint::core

@@ -1,0 +1,60 @@
+#include "image_evidence.hpp"
+
+#include <algorithm>
+
+namespace raypoint::core::detail {
+
+// Paper 4.2: "the center of mass (i.e. the average position weighted by the pixel magnitude)
+// of the absolute difference image". With SearchWeighting::strong only pixels at or above a
+// share of the strongest difference weigh in: sensor noise spread over the whole frame
+// otherwise pulls the centre toward the frame's middle, off a target entering at an edge.
+std::optional<cv::Point2f> ImageEvidence::detect() noexcept {
+    const cv::Mat& difference = images_.difference();
+    int floor = 1;
+    switch (settings_.search_weighting) {
+        case SearchWeighting::all:
+            break;
+        case SearchWeighting::strong: {
+            double strongest = 0.0;
+            cv::minMaxLoc(difference, nullptr, &strongest);
+            floor = std::max(1, static_cast<int>(strongest * settings_.strong_fraction));
+            break;
+        }
+    }
+    double sum = 0.0;
+    double sum_x = 0.0;
+    double sum_y = 0.0;
+    for (int y = 0; y < difference.rows; ++y) {
+        const auto* row = difference.ptr<std::uint8_t>(y);
+        for (int x = 0; x < difference.cols; ++x) {
+            if (row[x] < floor) continue;
+            sum += row[x];
+            sum_x += static_cast<double>(row[x]) * x;
+            sum_y += static_cast<double>(row[x]) * y;
+        }
+    }
+    if (sum <= 0.0) return std::nullopt;
+    return cv::Point2f(static_cast<float>(sum_x / sum), static_cast<float>(sum_y / sum));
+}
+
+// The patch is clipped to the image, so a point near the border still gets a colour.
+cv::Vec3f ImageEvidence::patch_mean(const cv::Mat& color, cv::Point2f at) const noexcept {
+    const int half = settings_.color_patch / 2;
+    const int cx = std::clamp(cvRound(at.x), 0, color.cols - 1);
+    const int cy = std::clamp(cvRound(at.y), 0, color.rows - 1);
+    const int x0 = std::max(0, cx - half);
+    const int x1 = std::min(color.cols - 1, cx + half);
+    const int y0 = std::max(0, cy - half);
+    const int y1 = std::min(color.rows - 1, cy + half);
+    cv::Vec3f sum(0.0F, 0.0F, 0.0F);
+    for (int y = y0; y <= y1; ++y) {
+        const auto* row = color.ptr<cv::Vec3b>(y);
+        for (int x = x0; x <= x1; ++x) {
+            sum += cv::Vec3f(row[x][0], row[x][1], row[x][2]);
+        }
+    }
+    const auto count = static_cast<float>((x1 - x0 + 1) * (y1 - y0 + 1));
+    return sum / count;
+}
+
+}  // namespace raypoint::core::detail

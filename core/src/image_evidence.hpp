@@ -1,0 +1,35 @@
+#pragma once
+// FrameEvidence answered from the preprocessed images of a real frame.
+
+#include "raypoint/core/preprocess.hpp"
+#include "raypoint/core/state_machine.hpp"
+
+namespace raypoint::core::detail {
+
+class ImageEvidence final : public FrameEvidence {
+public:
+    ImageEvidence(const Preprocessor& images, Estimator& estimator,
+                  const TrackingSettings& settings) noexcept
+        : images_(images), estimator_(estimator), settings_(settings) {}
+
+    double movement() const noexcept override { return images_.movement(); }
+    std::optional<cv::Point2f> detect() noexcept override;
+    Estimate estimate(cv::Point2f inner) noexcept override {
+        return estimator_.estimate(images_.edges(), inner);
+    }
+    cv::Vec3f current_color(cv::Point2f at) const noexcept override {
+        return patch_mean(images_.color(), at);
+    }
+    cv::Vec3f previous_color(cv::Point2f at) const noexcept override {
+        return patch_mean(images_.previous_color(), at);
+    }
+
+private:
+    cv::Vec3f patch_mean(const cv::Mat& color, cv::Point2f at) const noexcept;
+
+    const Preprocessor& images_;
+    Estimator& estimator_;
+    const TrackingSettings& settings_;
+};
+
+}  // namespace raypoint::core::detail

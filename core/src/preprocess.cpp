@@ -1,0 +1,235 @@
+#include "raypoint/core/preprocess.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+namespace raypoint::core {
+namespace {
+
+// The radius setting is in pixels of a 640-wide frame (see settings.hpp).
+constexpr double reference_width = 640.0;
+
+// Working pixel i of n covers input pixels [i*N/n, (i+1)*N/n); its centre, rounded.
+int working_to_input(int index, int working_size, int input_size) noexcept {
+    const double centre = (index + 0.5) * input_size / working_size - 0.5;
+    return static_cast<int>(std::lround(centre));
+}
+
+std::uint8_t clamp_byte(int value) noexcept {
+    return static_cast<std::uint8_t>(std::clamp(value, 0, 255));
+}
+
+}  // namespace
+
+int brightness_offset(const cv::Mat& difference, int minima) noexcept {
+    std::array<int, 256> histogram{};
+    for (int y = 0; y < difference.rows; ++y) {
+        const std::uint8_t* row = difference.ptr<std::uint8_t>(y);
+        for (int x = 0; x < difference.cols; ++x) ++histogram[row[x]];
+    }
+    int distinct = 0;
+    int largest = 0;
+    for (int value = 0; value < 256 && distinct < minima; ++value) {
+        if (histogram[value] == 0) continue;
+        ++distinct;
+        largest = value;
+    }
+    return largest;
+}
+
+Preprocessor::Preprocessor(const PreprocessSettings& settings) : settings_(settings) {
+    const cv::Size size(settings.work_width, settings.work_height);
+    for (int i = 0; i < 2; ++i) {
+        color_[i].create(size, CV_8UC3);
+        color_[i].setTo(cv::Scalar::all(0));
+        gray_[i].create(size, CV_8U);
+        gray_[i].setTo(cv::Scalar::all(0));
+    }
+    sobel_x_.create(size, CV_16SC3);
+    sobel_y_.create(size, CV_16SC3);
+    magnitude_.create(size, CV_8U);
+    edges_.create(size, CV_8U);
+    difference_.create(size, CV_8U);
+    magnitude_.setTo(cv::Scalar::all(0));
+    edges_.setTo(cv::Scalar::all(0));
+    difference_.setTo(cv::Scalar::all(0));
+    accumulator_.resize(static_cast<std::size_t>(settings.work_width));
+}
+
+void Preprocessor::prepare(const FrameView& frame) {
+    input_width_ = frame.width;
+    input_height_ = frame.height;
+    input_format_ = frame.format;
+    processed_ = 0;  // a new geometry has no comparable previous frame
+    const auto& taps = poisson_disk_taps();
+    const double radius = settings_.filter_radius * frame.width / reference_width;
+    tap_columns_.assign(taps.size(), std::vector<int>(settings_.work_width));
+    tap_rows_.assign(taps.size(), std::vector<int>(settings_.work_height));
+    for (std::size_t t = 0; t < taps.size(); ++t) {
+        const int dx = static_cast<int>(std::lround(taps[t].x * radius));
+        const int dy = static_cast<int>(std::lround(taps[t].y * radius));
+        for (int x = 0; x < settings_.work_width; ++x) {
+            const int column = working_to_input(x, settings_.work_width, frame.width) + dx;
+            tap_columns_[t][x] = std::clamp(column, 0, frame.width - 1);
+        }
+        for (int y = 0; y < settings_.work_height; ++y) {
+            const int row = working_to_input(y, settings_.work_height, frame.height) + dy;
+            tap_rows_[t][y] = std::clamp(row, 0, frame.height - 1);
+        }
+    }
+}
+
+bool Preprocessor::process(const FrameView& frame) noexcept {
+    const int bytes_per_pixel = frame.format == PixelFormat::bgr ? 3 : 2;
+    if (frame.data == nullptr || frame.width < settings_.work_width ||
+        frame.height < settings_.work_height || frame.stride < frame.width * bytes_per_pixel ||
+        (frame.format == PixelFormat::yuyv && frame.width % 2 != 0)) {
+        return false;
+    }
+    if (frame.width != input_width_ || frame.height != input_height_ ||
+        frame.format != input_format_) {
+        try {
+            prepare(frame);
+        } catch (...) {  // out of memory while setting up a new geometry: skip the frame
+            input_width_ = 0;
+            return false;
+        }
+    }
+    current_ = 1 - current_;
+    switch (frame.format) {
+        case PixelFormat::bgr:
+            filter_bgr(frame);
+            break;
+        case PixelFormat::yuyv:
+            filter_yuyv(frame);
+            break;
+    }
+    cv::cvtColor(color_[current_], gray_[current_], cv::COLOR_BGR2GRAY);
+    compute_edges();
+    ++processed_;
+    compute_difference();
+    return true;
+}
+
+// The filter is evaluated only at the working pixels' centres: filtering the whole frame and
+// then subsampling gives the same values at 16x the cost for 640x480.
+void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
+    const auto tap_count = static_cast<unsigned>(tap_columns_.size());
+    cv::Mat& out = color_[current_];
+    for (int y = 0; y < settings_.work_height; ++y) {
+        std::fill(accumulator_.begin(), accumulator_.end(), std::array<unsigned, 3>{});
+        for (unsigned t = 0; t < tap_count; ++t) {
+            const std::uint8_t* row = frame.data + static_cast<std::ptrdiff_t>(tap_rows_[t][y]) *
+                                                       frame.stride;
+            const int* columns = tap_columns_[t].data();
+            for (int x = 0; x < settings_.work_width; ++x) {
+                const std::uint8_t* pixel = row + columns[x] * 3;
+                auto& sum = accumulator_[x];
+                sum[0] += pixel[0];
+                sum[1] += pixel[1];
+                sum[2] += pixel[2];
+            }
+        }
+        auto* target = out.ptr<std::uint8_t>(y);
+        for (int x = 0; x < settings_.work_width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                target[x * 3 + c] =
+                    static_cast<std::uint8_t>((accumulator_[x][c] + tap_count / 2) / tap_count);
+            }
+        }
+    }
+}
+
+// YUYV: Y from the pixel itself, U and V from its pair; averaged as YUV, then converted to BGR
+// with BT.601 limited range, the usual meaning of V4L2_PIX_FMT_YUYV from webcams.
+void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
+    const auto tap_count = static_cast<unsigned>(tap_columns_.size());
+    cv::Mat& out = color_[current_];
+    for (int y = 0; y < settings_.work_height; ++y) {
+        std::fill(accumulator_.begin(), accumulator_.end(), std::array<unsigned, 3>{});
+        for (unsigned t = 0; t < tap_count; ++t) {
+            const std::uint8_t* row = frame.data + static_cast<std::ptrdiff_t>(tap_rows_[t][y]) *
+                                                       frame.stride;
+            const int* columns = tap_columns_[t].data();
+            for (int x = 0; x < settings_.work_width; ++x) {
+                const int column = columns[x];
+                const std::uint8_t* pair = row + (column & ~1) * 2;
+                auto& sum = accumulator_[x];
+                sum[0] += pair[(column & 1) * 2];
+                sum[1] += pair[1];
+                sum[2] += pair[3];
+            }
+        }
+        auto* target = out.ptr<std::uint8_t>(y);
+        for (int x = 0; x < settings_.work_width; ++x) {
+            const int luma = static_cast<int>((accumulator_[x][0] + tap_count / 2) / tap_count) - 16;
+            const int u = static_cast<int>((accumulator_[x][1] + tap_count / 2) / tap_count) - 128;
+            const int v = static_cast<int>((accumulator_[x][2] + tap_count / 2) / tap_count) - 128;
+            const int scaled = 298 * luma + 128;
+            target[x * 3 + 0] = clamp_byte((scaled + 516 * u) >> 8);
+            target[x * 3 + 1] = clamp_byte((scaled - 100 * u - 208 * v) >> 8);
+            target[x * 3 + 2] = clamp_byte((scaled + 409 * v) >> 8);
+        }
+    }
+}
+
+// Sobel 3x3 on each channel; the magnitude is the L2 norm, saturated to 8 bits as in a grey
+// edge image. EdgeSource::luma uses the grey image's gradient (paper 4.1); max_channel the
+// strongest channel's, which keeps a skin hand's outline over a background of equal brightness.
+void Preprocessor::compute_edges() noexcept {
+    const bool per_channel = settings_.edge_source == EdgeSource::max_channel;
+    const cv::Mat& source = per_channel ? color_[current_] : gray_[current_];
+    const int channels = per_channel ? 3 : 1;
+    cv::Mat gx = sobel_x_;
+    cv::Mat gy = sobel_y_;
+    if (!per_channel) {
+        // Reuse the 3-channel buffers' memory as single-channel images of the same size.
+        gx = cv::Mat(source.size(), CV_16S, sobel_x_.data);
+        gy = cv::Mat(source.size(), CV_16S, sobel_y_.data);
+    }
+    cv::Sobel(source, gx, CV_16S, 1, 0, 3, 1.0, 0.0, cv::BORDER_REPLICATE);
+    cv::Sobel(source, gy, CV_16S, 0, 1, 3, 1.0, 0.0, cv::BORDER_REPLICATE);
+    const int threshold = settings_.edge_threshold;
+    for (int y = 0; y < source.rows; ++y) {
+        const auto* row_x = gx.ptr<std::int16_t>(y);
+        const auto* row_y = gy.ptr<std::int16_t>(y);
+        auto* magnitude = magnitude_.ptr<std::uint8_t>(y);
+        auto* edge = edges_.ptr<std::uint8_t>(y);
+        for (int x = 0; x < source.cols; ++x) {
+            int strongest = 0;
+            for (int c = 0; c < channels; ++c) {
+                const int dx = row_x[x * channels + c];
+                const int dy = row_y[x * channels + c];
+                strongest = std::max(strongest, dx * dx + dy * dy);
+            }
+            const int value = std::min(255, static_cast<int>(std::sqrt(static_cast<float>(strongest))));
+            magnitude[x] = static_cast<std::uint8_t>(value);
+            edge[x] = value > threshold ? 1 : 0;
+        }
+    }
+}
+
+void Preprocessor::compute_difference() noexcept {
+    if (!has_previous()) {
+        difference_.setTo(cv::Scalar::all(0));
+        movement_ = 0.0;
+        offset_ = 0;
+        return;
+    }
+    cv::absdiff(gray_[current_], gray_[1 - current_], difference_);
+    offset_ = brightness_offset(difference_, settings_.compensation_minima);
+    double sum = 0.0;
+    for (int y = 0; y < difference_.rows; ++y) {
+        auto* row = difference_.ptr<std::uint8_t>(y);
+        for (int x = 0; x < difference_.cols; ++x) {
+            const int value = std::max(0, row[x] - offset_);
+            row[x] = static_cast<std::uint8_t>(value);
+            sum += value;
+        }
+    }
+    movement_ = sum;
+}
+
+}  // namespace raypoint::core

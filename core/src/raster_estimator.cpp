@@ -1,0 +1,164 @@
+#include "raster_estimator.hpp"
+
+#include <algorithm>
+
+#include "estimator_common.hpp"
+
+namespace raypoint::core::detail {
+
+RasterEstimator::RasterEstimator(const EstimatorSettings& settings)
+    : RayEstimatorBase(settings) {}
+
+void RasterEstimator::resize(const cv::Mat& edges) {
+    width_ = edges.cols;
+    height_ = edges.rows;
+    const int m = settings_.block_size;
+    trace_.block_size = m;
+    trace_.blocks_wide = (width_ + m - 1) / m;
+    trace_.blocks_high = (height_ + m - 1) / m;
+    block_of_column_.resize(static_cast<std::size_t>(width_));
+    block_of_row_.resize(static_cast<std::size_t>(height_));
+    for (int x = 0; x < width_; ++x) block_of_column_[x] = x / m;
+    for (int y = 0; y < height_; ++y) block_of_row_[y] = y / m;
+    const auto pixels = static_cast<std::size_t>(width_) * height_;
+    trace_.blocks.assign(static_cast<std::size_t>(trace_.blocks_wide) * trace_.blocks_high, 0);
+    selected_.reserve(trace_.blocks.size());
+    ray_pixels_.assign(pixels, 0);
+    filled_.assign(pixels, 0);
+    queue_.reserve(pixels);
+}
+
+void RasterEstimator::select(int x, int y) noexcept {
+    ray_pixels_[static_cast<std::size_t>(y) * width_ + x] = 1;
+    const int block = block_of_row_[y] * trace_.blocks_wide + block_of_column_[x];
+    if (trace_.blocks[block] == 0) {
+        trace_.blocks[block] = 1;
+        selected_.push_back(block);
+    }
+}
+
+// Block centres are the centres of the pixels a block really has (the last row and column of
+// blocks may be cut by the image border), in pixel-centre coordinates.
+cv::Point2f RasterEstimator::block_centroid() const noexcept {
+    double x = 0.0;
+    double y = 0.0;
+    double weight = 0.0;
+    const int m = settings_.block_size;
+    for (const int block : selected_) {
+        const int bx = (block % trace_.blocks_wide) * m;
+        const int by = (block / trace_.blocks_wide) * m;
+        const int w = std::min(m, width_ - bx);
+        const int h = std::min(m, height_ - by);
+        const double area = static_cast<double>(w) * h;
+        x += area * (bx + (w - 1) * 0.5);
+        y += area * (by + (h - 1) * 0.5);
+        weight += area;
+    }
+    if (weight == 0.0) return {};
+    return {static_cast<float>(x / weight), static_cast<float>(y / weight)};
+}
+
+double RasterEstimator::block_area() const noexcept {
+    double area = 0.0;
+    const int m = settings_.block_size;
+    for (const int block : selected_) {
+        const int bx = (block % trace_.blocks_wide) * m;
+        const int by = (block / trace_.blocks_wide) * m;
+        area += static_cast<double>(std::min(m, width_ - bx)) * std::min(m, height_ - by);
+    }
+    return area;
+}
+
+Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcept {
+    if (edges.cols != width_ || edges.rows != height_) {
+        try {
+            resize(edges);
+        } catch (...) {
+            return Estimate{inner, 0.0, inner, 0};
+        }
+    }
+    // Blocks are never unselected within a frame (paper 3.4), so the centroid converges.
+    for (const int block : selected_) trace_.blocks[block] = 0;
+    selected_.clear();
+    std::fill(ray_pixels_.begin(), ray_pixels_.end(), 0);
+    const auto visit = [this](int x, int y) { select(x, y); };
+
+    Estimate result;
+    cv::Point2f previous_centroid(-1e6F, -1e6F);
+    for (int i = 0; i < settings_.max_iterations; ++i) {
+        trace_.rays.clear();
+        cast_levels(caster_, edges, inner, settings_.recasts, hits_, scratch_, &trace_.rays, visit);
+        result.centroid = block_centroid();
+        const cv::Point2f walked = RayCaster::walk(edges, inner, result.centroid);
+        relocation_.clear();
+        caster_.cast(edges, walked, relocation_, visit);
+        for (const auto& hit : relocation_) trace_.rays.push_back({walked, hit.point});
+        const cv::Point2f moved = RayCaster::walk(edges, walked, mean_point(relocation_));
+        result.iterations = i + 1;
+        const bool settled = distance(moved, inner) < settings_.tolerance &&
+                             distance(result.centroid, previous_centroid) < settings_.tolerance;
+        inner = moved;
+        previous_centroid = result.centroid;
+        if (settled) break;
+    }
+    result.centroid = block_centroid();
+    result.area = block_area();
+    result.inner = inner;
+    switch (settings_.area_mode) {
+        case AreaMode::blocks:
+            break;
+        case AreaMode::refined:
+            refine(edges, result);
+            break;
+    }
+    return result;
+}
+
+void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept {
+    std::fill(filled_.begin(), filled_.end(), 0);
+    queue_.clear();
+    const auto in_selected_block = [this](int x, int y) {
+        return trace_.blocks[block_of_row_[y] * trace_.blocks_wide + block_of_column_[x]] != 0;
+    };
+    for (int y = 0; y < height_; ++y) {
+        for (int x = 0; x < width_; ++x) {
+            const int index = y * width_ + x;
+            if (ray_pixels_[index] != 0) {
+                filled_[index] = 1;
+                queue_.push_back(index);
+            }
+        }
+    }
+    double sum_x = 0.0;
+    double sum_y = 0.0;
+    double area = 0.0;
+    constexpr unsigned char edge_counted = 2;
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+        const int index = queue_[head];
+        const int x = index % width_;
+        const int y = index / width_;
+        sum_x += x;
+        sum_y += y;
+        area += 1.0;
+        const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+        for (const auto& n : neighbours) {
+            if (n[0] < 0 || n[1] < 0 || n[0] >= width_ || n[1] >= height_) continue;
+            const int next = n[1] * width_ + n[0];
+            if (filled_[next] != 0 || !in_selected_block(n[0], n[1])) continue;
+            if (edges.ptr<std::uint8_t>(n[1])[n[0]] != 0) {
+                filled_[next] = edge_counted;
+                sum_x += 0.5 * n[0];
+                sum_y += 0.5 * n[1];
+                area += 0.5;
+                continue;
+            }
+            filled_[next] = 1;
+            queue_.push_back(next);
+        }
+    }
+    if (area <= 0.0) return;
+    estimate.area = area;
+    estimate.centroid = {static_cast<float>(sum_x / area), static_cast<float>(sum_y / area)};
+}
+
+}  // namespace raypoint::core::detail

@@ -1,0 +1,34 @@
+#pragma once
+
+#include <vector>
+
+#include "ray_estimators.hpp"
+
+namespace raypoint::core::detail {
+
+// Paper 3.4: iterative n^y-ray casting with m-rasterization.
+class RasterEstimator final : public RayEstimatorBase {
+public:
+    explicit RasterEstimator(const EstimatorSettings& settings);
+    Estimate estimate(const cv::Mat& edges, cv::Point2f inner) noexcept override;
+
+private:
+    void resize(const cv::Mat& edges);
+    void select(int x, int y) noexcept;
+    cv::Point2f block_centroid() const noexcept;
+    double block_area() const noexcept;
+    // AreaMode::refined: area and centroid of the selected blocks' pixels that the rays can
+    // reach without crossing an edge, with the edge band counted half (it straddles the outline).
+    void refine(const cv::Mat& edges, Estimate& estimate) noexcept;
+
+    int width_ = 0;
+    int height_ = 0;
+    std::vector<int> block_of_column_;
+    std::vector<int> block_of_row_;
+    std::vector<unsigned char> ray_pixels_;  // 1 where a ray ran through, this frame
+    std::vector<int> selected_;              // indices of selected blocks, in selection order
+    std::vector<unsigned char> filled_;      // refine(): 1 = reached
+    std::vector<int> queue_;
+};
+
+}  // namespace raypoint::core::detail

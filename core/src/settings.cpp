@@ -1,0 +1,15 @@
+#include "raypoint/core/settings.hpp"
+
+namespace raypoint::core {
+
+Settings paper_settings() {
+    Settings settings;
+    settings.preprocess.edge_source = EdgeSource::luma;
+    settings.estimator.area_mode = AreaMode::blocks;
+    settings.tracking.keep_still_target = false;
+    settings.tracking.search_weighting = SearchWeighting::all;
+    settings.output.smoothing = SmoothingKind::ema;
+    return settings;
+}
+
+}  // namespace raypoint::core

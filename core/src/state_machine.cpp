@@ -1,0 +1,205 @@
+#include "raypoint/core/state_machine.hpp"
+
+#include <array>
+#include <cmath>
+
+namespace raypoint::core {
+namespace {
+
+// The paper's thresholds are sums over 160x120 pixels (section 4.2).
+constexpr double paper_working_pixels = 160.0 * 120.0;
+
+}  // namespace
+
+std::string_view to_string(TrackerState state) noexcept {
+    switch (state) {
+        case TrackerState::initializing:
+            return "initializing";
+        case TrackerState::searching:
+            return "searching";
+        case TrackerState::tracking:
+            return "tracking";
+        case TrackerState::validating:
+            return "validating";
+        case TrackerState::recovering:
+            return "recovering";
+    }
+    return "?";
+}
+
+StateMachine::StateMachine(const TrackingSettings& settings, cv::Size working_size)
+    : settings_(settings),
+      working_size_(working_size),
+      working_area_(static_cast<double>(working_size.area())),
+      search_threshold_(settings.search_threshold * working_area_ / paper_working_pixels),
+      idle_threshold_(settings.idle_threshold * working_area_ / paper_working_pixels) {}
+
+float StateMachine::color_distance(cv::Vec3f a, cv::Vec3f b) noexcept {
+    return std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
+}
+
+StepResult StateMachine::step(Timestamp timestamp, FrameEvidence& evidence) noexcept {
+    now_ = timestamp;
+    evidence_ = &evidence;
+    result_ = StepResult{};
+    bool finished = false;
+    while (!finished) {
+        switch (state_) {
+            case TrackerState::initializing:
+                finished = on_initializing();
+                break;
+            case TrackerState::searching:
+                finished = on_searching();
+                break;
+            case TrackerState::tracking:
+                finished = on_tracking();
+                break;
+            case TrackerState::validating:
+                finished = on_validating();
+                break;
+            case TrackerState::recovering:
+                finished = on_recovering();
+                break;
+        }
+    }
+    result_.state = state_;
+    evidence_ = nullptr;
+    return result_;
+}
+
+// Waits startup_seconds of frame time from the first frame (paper: the camera's automatic
+// shutter settles); the frame that ends the wait already counts as the first searched one's
+// predecessor.
+bool StateMachine::on_initializing() noexcept {
+    if (!started_at_) started_at_ = now_;
+    if (static_cast<double>(now_ - *started_at_) >= settings_.startup_seconds * 1e6) {
+        state_ = TrackerState::searching;
+    }
+    return true;
+}
+
+// Movement over the search threshold picks a target at the centre of mass of the difference.
+// Estimation and validation start with the next frame: validating now would compare the target
+// with the background it has just covered.
+bool StateMachine::on_searching() noexcept {
+    if (evidence_->movement() <= search_threshold_) return true;
+    const auto found = evidence_->detect();
+    if (!found) return true;
+    inner_ = *found;
+    result_.estimate = Estimate{*found, 0.0, *found, 0};
+    result_.has_target = true;
+    result_.acquired = true;
+    reference_color_ = evidence_->current_color(*found);
+    still_since_.reset();
+    state_ = TrackerState::tracking;
+    return true;
+}
+
+bool StateMachine::on_tracking() noexcept {
+    if (evidence_->movement() < idle_threshold_) {
+        if (!still_since_) still_since_ = now_;
+    } else {
+        still_since_.reset();
+    }
+    if (still_too_long() && !settings_.keep_still_target) {
+        drop_target();
+        return true;
+    }
+    candidate_ = evidence_->estimate(inner_);
+    result_.iterations += candidate_.iterations;
+    if (!area_in_range(candidate_.area)) {
+        drop_target();
+        return true;
+    }
+    state_ = TrackerState::validating;
+    return false;
+}
+
+// The previous inner point in the previous frame against the new one in this frame.
+bool StateMachine::on_validating() noexcept {
+    const cv::Vec3f before = evidence_->previous_color(inner_);
+    const cv::Vec3f now = evidence_->current_color(candidate_.inner);
+    if (color_distance(before, now) > static_cast<float>(settings_.color_tolerance)) {
+        state_ = TrackerState::recovering;
+        return false;
+    }
+    // A target kept while still must still look like the target did when it last moved;
+    // otherwise it has left and the inner point sits on background.
+    if (still_too_long() &&
+        color_distance(reference_color_, now) > static_cast<float>(settings_.color_tolerance)) {
+        drop_target();
+        return true;
+    }
+    accept(candidate_);
+    state_ = TrackerState::tracking;
+    return true;
+}
+
+// Recovery points 10 and 20 px away in the 8 directions around the failed inner point; the one
+// that best matches the previous inner point's colour is re-estimated and validated once more.
+bool StateMachine::on_recovering() noexcept {
+    static constexpr std::array<std::array<int, 2>, 8> directions{
+        {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}}};
+    const cv::Vec3f before = evidence_->previous_color(inner_);
+    const auto tolerance = static_cast<float>(settings_.color_tolerance);
+    std::optional<cv::Point2f> best;
+    float best_distance = tolerance;
+    for (const int offset : {settings_.recovery_near, settings_.recovery_far}) {
+        for (const auto& d : directions) {
+            const cv::Point2f point = candidate_.inner + cv::Point2f(static_cast<float>(d[0] * offset),
+                                                                     static_cast<float>(d[1] * offset));
+            if (point.x < 0 || point.y < 0 || point.x > static_cast<float>(working_size_.width - 1) ||
+                point.y > static_cast<float>(working_size_.height - 1)) {
+                continue;
+            }
+            const float distance = color_distance(before, evidence_->current_color(point));
+            if (distance <= best_distance) {
+                best_distance = distance;
+                best = point;
+            }
+        }
+    }
+    if (!best) {
+        drop_target();
+        return true;
+    }
+    const Estimate recovered = evidence_->estimate(*best);
+    result_.iterations += recovered.iterations;
+    const bool matches =
+        color_distance(before, evidence_->current_color(recovered.inner)) <= tolerance;
+    if (!matches || !area_in_range(recovered.area)) {
+        drop_target();
+        return true;
+    }
+    result_.recovered = true;
+    accept(recovered);
+    state_ = TrackerState::tracking;
+    return true;
+}
+
+bool StateMachine::area_in_range(double area) const noexcept {
+    const double fraction = area / working_area_;
+    return fraction >= settings_.min_area && fraction <= settings_.max_area;
+}
+
+bool StateMachine::still_too_long() const noexcept {
+    return still_since_ &&
+           static_cast<double>(now_ - *still_since_) >= settings_.idle_seconds * 1e6;
+}
+
+void StateMachine::drop_target() noexcept {
+    state_ = TrackerState::searching;
+    still_since_.reset();
+    result_.has_target = false;
+    result_.lost = true;
+}
+
+void StateMachine::accept(const Estimate& estimate) noexcept {
+    inner_ = estimate.inner;
+    result_.estimate = estimate;
+    result_.has_target = true;
+    result_.area_known = true;
+    if (!still_since_) reference_color_ = evidence_->current_color(estimate.inner);
+}
+
+}  // namespace raypoint::core

@@ -1,0 +1,89 @@
+#include "raypoint/core/tracker.hpp"
+
+#include <cmath>
+
+#include "image_evidence.hpp"
+#include "raypoint/core/preprocess.hpp"
+#include "raypoint/core/smoothing.hpp"
+#include "raypoint/core/state_machine.hpp"
+
+namespace raypoint::core {
+
+struct Tracker::Impl {
+    explicit Impl(const Settings& s)
+        : settings(s),
+          preprocessor(s.preprocess),
+          estimator(make_estimator(s.estimator)),
+          machine(s.tracking, cv::Size(s.preprocess.work_width, s.preprocess.work_height)),
+          smoother(s.output),
+          evidence(preprocessor, *estimator, settings.tracking) {}
+
+    Settings settings;
+    Preprocessor preprocessor;
+    std::unique_ptr<Estimator> estimator;
+    StateMachine machine;
+    PositionSmoother smoother;
+    detail::ImageEvidence evidence;
+    std::int64_t frames = 0;
+    std::optional<double> reference_area;  // the area when tracking started (paper 4.3)
+    EstimatorTrace empty_trace;
+};
+
+Tracker::Tracker(const Settings& settings) : impl_(std::make_unique<Impl>(settings)) {}
+Tracker::~Tracker() = default;
+
+const Settings& Tracker::settings() const noexcept { return impl_->settings; }
+
+TrackerImages Tracker::images() const noexcept {
+    return {impl_->preprocessor.color(), impl_->preprocessor.magnitude(),
+            impl_->preprocessor.difference(), impl_->estimator->trace()};
+}
+
+FrameResult Tracker::process(const FrameView& frame) noexcept {
+    Impl& d = *impl_;
+    FrameResult result;
+    result.frame = d.frames++;
+    result.timestamp = frame.timestamp;
+    if (!d.preprocessor.process(frame)) {
+        result.state = d.machine.state();
+        return result;
+    }
+    const StepResult step = d.machine.step(frame.timestamp, d.evidence);
+    result.state = step.state;
+    result.movement = d.preprocessor.movement();
+    result.iterations = step.iterations;
+    result.recovered = step.recovered;
+    result.lost = step.lost;
+    if (step.acquired || !step.has_target) d.reference_area.reset();
+    if (!step.has_target) return result;
+
+    // Working pixel centres are at integer coordinates; fractions are of the whole frame.
+    const double width = d.settings.preprocess.work_width;
+    const double height = d.settings.preprocess.work_height;
+    const auto to_fraction = [&](cv::Point2f p) {
+        return cv::Point2d((p.x + 0.5) / width, (p.y + 0.5) / height);
+    };
+    result.has_target = true;
+    result.centroid = to_fraction(step.estimate.centroid);
+    result.inner = to_fraction(step.estimate.inner);
+    if (!step.area_known) return result;
+
+    const double area = step.estimate.area / (width * height);
+    result.area = area;
+    // z = sqrt(area) relative to the area when tracking started: 0 then, growing as the
+    // target comes closer (sqrt(area) is proportional to 1/depth for a rigid target).
+    const bool first = !d.reference_area.has_value();
+    if (first) d.reference_area = area;
+    const cv::Point3d raw(result.centroid.x, result.centroid.y,
+                          std::sqrt(area) - std::sqrt(*d.reference_area));
+    if (first) {
+        d.smoother.reset(raw, frame.timestamp);
+        result.position = raw;
+    } else {
+        result.position = d.smoother.update(raw, frame.timestamp);
+    }
+    result.has_position = true;
+    return result;
+}
+
+}  // namespace raypoint::core
