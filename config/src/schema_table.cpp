@@ -63,6 +63,9 @@ const std::vector<Key>& schema() {
             "raster area and centroid: whole blocks (paper) or refined to the outline",
             {{AreaMode::blocks, "blocks"}, {AreaMode::refined, "refined"}},
             [](auto& c) -> auto& { return c.core.estimator.area_mode; }),
+        real_key("estimator", "fill_limit", 1.0, 100.0,
+                 "refined: a fill this many times the blocks' area has leaked and is redone",
+                 [](auto& c) -> auto& { return c.core.estimator.fill_limit; }),
         // [tracking] paper 4.2
         real_key("tracking", "startup_seconds", 0.0, 30.0,
                  "INITIALIZING: seconds of frame time before searching starts",

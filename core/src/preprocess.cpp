@@ -206,7 +206,8 @@ void Preprocessor::compute_edges() noexcept {
             }
             const int value = std::min(255, static_cast<int>(std::sqrt(static_cast<float>(strongest))));
             magnitude[x] = static_cast<std::uint8_t>(value);
-            edge[x] = value > threshold ? 1 : 0;
+            // Edge pixels keep their magnitude: the raster estimator climbs it to the outline's ridge.
+            edge[x] = value > threshold ? static_cast<std::uint8_t>(value) : 0;
         }
     }
 }

@@ -114,48 +114,88 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
     return result;
 }
 
-void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept {
+// Flood fill from every pixel a ray ran through, bounded by edges. A gap in the outline lets
+// the fill leak into the background: past fill_limit x the selected blocks' area the fill
+// starts over restricted to the selected blocks, the region the rays vouch for.
+bool RasterEstimator::fill(const cv::Mat& edges, bool within_blocks, double limit) noexcept {
     std::fill(filled_.begin(), filled_.end(), 0);
     queue_.clear();
-    const auto in_selected_block = [this](int x, int y) {
-        return trace_.blocks[block_of_row_[y] * trace_.blocks_wide + block_of_column_[x]] != 0;
-    };
-    for (int y = 0; y < height_; ++y) {
-        for (int x = 0; x < width_; ++x) {
-            const int index = y * width_ + x;
-            if (ray_pixels_[index] != 0) {
-                filled_[index] = 1;
-                queue_.push_back(index);
-            }
+    for (std::size_t index = 0; index < ray_pixels_.size(); ++index) {
+        if (ray_pixels_[index] != 0) {
+            filled_[index] = inside;
+            queue_.push_back(static_cast<int>(index));
         }
     }
-    double sum_x = 0.0;
-    double sum_y = 0.0;
-    double area = 0.0;
-    constexpr unsigned char edge_counted = 2;
     for (std::size_t head = 0; head < queue_.size(); ++head) {
+        if (static_cast<double>(queue_.size()) > limit) return false;
         const int index = queue_[head];
         const int x = index % width_;
         const int y = index / width_;
-        sum_x += x;
-        sum_y += y;
-        area += 1.0;
         const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
         for (const auto& n : neighbours) {
             if (n[0] < 0 || n[1] < 0 || n[0] >= width_ || n[1] >= height_) continue;
             const int next = n[1] * width_ + n[0];
-            if (filled_[next] != 0 || !in_selected_block(n[0], n[1])) continue;
-            if (edges.ptr<std::uint8_t>(n[1])[n[0]] != 0) {
-                filled_[next] = edge_counted;
-                sum_x += 0.5 * n[0];
-                sum_y += 0.5 * n[1];
-                area += 0.5;
+            if (filled_[next] != 0 || edges.ptr<std::uint8_t>(n[1])[n[0]] != 0) continue;
+            if (within_blocks &&
+                trace_.blocks[block_of_row_[n[1]] * trace_.blocks_wide + block_of_column_[n[0]]] ==
+                    0) {
                 continue;
             }
-            filled_[next] = 1;
+            filled_[next] = inside;
             queue_.push_back(next);
         }
     }
+    return true;
+}
+
+// The outline is the ridge of the edge band, not its inner side: from the filled region, climb
+// the band while the edge strength does not fall, at most band_depth pixels; climbed pixels
+// count whole, ridge pixels (no stronger neighbour) half, as the outline runs through them.
+void RasterEstimator::add_edge_band(const cv::Mat& edges, double& area, double& sum_x,
+                                    double& sum_y) noexcept {
+    constexpr int band_depth = 3;
+    const std::size_t inside_count = queue_.size();
+    for (std::size_t head = 0; head < queue_.size(); ++head) {
+        const int index = queue_[head];
+        const int x = index % width_;
+        const int y = index / width_;
+        const int depth = filled_[index] == inside ? 0 : filled_[index] - band;
+        const int strength = filled_[index] == inside ? 0 : edges.ptr<std::uint8_t>(y)[x];
+        bool ridge = true;
+        const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
+        for (const auto& n : neighbours) {
+            if (n[0] < 0 || n[1] < 0 || n[0] >= width_ || n[1] >= height_) continue;
+            const int next = n[1] * width_ + n[0];
+            const int next_strength = edges.ptr<std::uint8_t>(n[1])[n[0]];
+            if (next_strength > strength && filled_[index] != inside) ridge = false;
+            if (filled_[next] != 0 || next_strength == 0 || next_strength < strength ||
+                depth >= band_depth) {
+                continue;
+            }
+            filled_[next] = static_cast<unsigned char>(band + depth + 1);
+            queue_.push_back(next);
+        }
+        if (head < inside_count) continue;
+        const double weight = ridge ? 0.5 : 1.0;
+        area += weight;
+        sum_x += weight * x;
+        sum_y += weight * y;
+    }
+}
+
+void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept {
+    if (!fill(edges, false, settings_.fill_limit * estimate.area)) {
+        fill(edges, true, static_cast<double>(filled_.size()));
+    }
+    double area = 0.0;
+    double sum_x = 0.0;
+    double sum_y = 0.0;
+    for (const int index : queue_) {
+        sum_x += index % width_;
+        sum_y += index / width_;
+    }
+    area = static_cast<double>(queue_.size());
+    add_edge_band(edges, area, sum_x, sum_y);
     if (area <= 0.0) return;
     estimate.area = area;
     estimate.centroid = {static_cast<float>(sum_x / area), static_cast<float>(sum_y / area)};

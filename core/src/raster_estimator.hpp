@@ -17,9 +17,15 @@ private:
     void select(int x, int y) noexcept;
     cv::Point2f block_centroid() const noexcept;
     double block_area() const noexcept;
-    // AreaMode::refined: area and centroid of the selected blocks' pixels that the rays can
-    // reach without crossing an edge, with the edge band counted half (it straddles the outline).
+    // AreaMode::refined: area and centroid of the region the rays ran through, grown up to the
+    // outline's ridge (docs/estimators.md).
     void refine(const cv::Mat& edges, Estimate& estimate) noexcept;
+    bool fill(const cv::Mat& edges, bool within_blocks, double limit) noexcept;
+    void add_edge_band(const cv::Mat& edges, double& area, double& sum_x, double& sum_y) noexcept;
+
+    // filled_ values: 0 not reached, inside, or band + depth into the edge band.
+    static constexpr unsigned char inside = 1;
+    static constexpr unsigned char band = 2;
 
     int width_ = 0;
     int height_ = 0;

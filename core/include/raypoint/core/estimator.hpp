@@ -39,8 +39,9 @@ struct EstimatorTrace {
 class Estimator {
 public:
     virtual ~Estimator() = default;
-    // edges: CV_8U, non-zero where there is an edge. Does not allocate once warmed up on a
-    // given image size.
+    // edges: CV_8U, non-zero where there is an edge; the value is the edge strength (the Sobel
+    // magnitude), which AreaMode::refined uses to find the outline's ridge. Does not allocate
+    // once warmed up on a given image size.
     virtual Estimate estimate(const cv::Mat& edges, cv::Point2f inner) noexcept = 0;
     virtual const EstimatorTrace& trace() const noexcept = 0;
 };

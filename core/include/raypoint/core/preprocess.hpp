@@ -33,7 +33,8 @@ public:
     const cv::Mat& previous_color() const noexcept { return color_[1 - current_]; }
     const cv::Mat& gray() const noexcept { return gray_[current_]; }      // CV_8U
     const cv::Mat& magnitude() const noexcept { return magnitude_; }     // CV_8U Sobel magnitude
-    const cv::Mat& edges() const noexcept { return edges_; }             // CV_8U 1 = edge
+    // CV_8U: the magnitude where it is over the edge threshold, 0 elsewhere.
+    const cv::Mat& edges() const noexcept { return edges_; }
     const cv::Mat& difference() const noexcept { return difference_; }   // CV_8U compensated
     bool has_previous() const noexcept { return processed_ >= 2; }
     // Sum of the compensated difference over the working pixels (paper 4.1 "global inter-frame

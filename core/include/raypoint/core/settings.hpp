@@ -51,6 +51,9 @@ struct EstimatorSettings {
     int max_iterations = 10;    // the paper gives no number
     double tolerance = 0.5;     // working pixels; "negligible adjustment"
     AreaMode area_mode = AreaMode::refined;
+    // AreaMode::refined: a fill larger than this times the selected blocks' area has leaked
+    // through a gap in the outline and is redone within the selected blocks.
+    double fill_limit = 1.5;
 };
 
 struct TrackingSettings {
