@@ -82,6 +82,7 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
     selected_.clear();
     std::fill(ray_pixels_.begin(), ray_pixels_.end(), 0);
     const auto visit = [this](int x, int y) { select(x, y); };
+    inner = RayCaster::off_edge(edges, inner, settings_.edge_escape);
 
     Estimate result;
     cv::Point2f previous_centroid(-1e6F, -1e6F);

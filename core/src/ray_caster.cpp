@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace raypoint::core {
 
@@ -43,6 +44,30 @@ cv::Point2f RayCaster::walk(const cv::Mat& edges, cv::Point2f from, cv::Point2f 
         return position;
     }
     return to;
+}
+
+cv::Point2f RayCaster::off_edge(const cv::Mat& edges, cv::Point2f point, int radius) noexcept {
+    const int cx = cvRound(point.x);
+    const int cy = cvRound(point.y);
+    const auto open = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < edges.cols && y < edges.rows &&
+               edges.ptr<std::uint8_t>(y)[x] == 0;
+    };
+    const bool inside_image = cx >= 0 && cy >= 0 && cx < edges.cols && cy < edges.rows;
+    if (!inside_image || open(cx, cy)) return point;
+    std::optional<cv::Point> best;
+    int best_distance = 0;
+    for (int dy = -radius; dy <= radius; ++dy) {
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const int distance = dx * dx + dy * dy;
+            if (distance > radius * radius || !open(cx + dx, cy + dy)) continue;
+            if (!best || distance < best_distance) {
+                best = cv::Point(cx + dx, cy + dy);
+                best_distance = distance;
+            }
+        }
+    }
+    return best ? cv::Point2f(static_cast<float>(best->x), static_cast<float>(best->y)) : point;
 }
 
 }  // namespace raypoint::core

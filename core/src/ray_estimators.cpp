@@ -32,6 +32,7 @@ cv::Point2f RayEstimatorBase::relocate(const cv::Mat& edges, cv::Point2f inner) 
 
 // Paper 3.1: one cast; centroid = mean hit; inner point walks toward it and is recentred.
 Estimate RayEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcept {
+    inner = RayCaster::off_edge(edges, inner, settings_.edge_escape);
     trace_.rays.clear();
     cast_levels(caster_, edges, inner, 1, hits_, scratch_, &trace_.rays, no_visit);
     Estimate result;
@@ -45,6 +46,7 @@ Estimate RayEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcep
 // Paper 3.2: cast, centroid, walk, repeated until both stop moving; the inner point is
 // recentred once, after the loop.
 Estimate IterativeRayEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcept {
+    inner = RayCaster::off_edge(edges, inner, settings_.edge_escape);
     Estimate result;
     cv::Point2f previous_centroid(-1e6F, -1e6F);
     for (int i = 0; i < settings_.max_iterations; ++i) {
@@ -66,6 +68,7 @@ Estimate IterativeRayEstimator::estimate(const cv::Mat& edges, cv::Point2f inner
 
 // Paper 3.3: y levels of casting, centroid = mean of the n^y last hits, walk, recentre, repeat.
 Estimate IterativeNyRayEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcept {
+    inner = RayCaster::off_edge(edges, inner, settings_.edge_escape);
     Estimate result;
     cv::Point2f previous_centroid(-1e6F, -1e6F);
     for (int i = 0; i < settings_.max_iterations; ++i) {

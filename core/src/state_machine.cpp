@@ -27,6 +27,26 @@ std::string_view to_string(TrackerState state) noexcept {
     return "?";
 }
 
+std::string_view to_string(LossReason reason) noexcept {
+    switch (reason) {
+        case LossReason::none:
+            return "none";
+        case LossReason::too_small:
+            return "too-small";
+        case LossReason::too_large:
+            return "too-large";
+        case LossReason::still:
+            return "still";
+        case LossReason::left:
+            return "left";
+        case LossReason::no_recovery_point:
+            return "no-recovery-point";
+        case LossReason::recovery_failed:
+            return "recovery-failed";
+    }
+    return "?";
+}
+
 StateMachine::StateMachine(const TrackingSettings& settings, cv::Size working_size)
     : settings_(settings),
       working_size_(working_size),
@@ -102,13 +122,13 @@ bool StateMachine::on_tracking() noexcept {
         still_since_.reset();
     }
     if (still_too_long() && !settings_.keep_still_target) {
-        drop_target();
+        drop_target(LossReason::still);
         return true;
     }
     candidate_ = evidence_->estimate(inner_);
     result_.iterations += candidate_.iterations;
-    if (!area_in_range(candidate_.area)) {
-        drop_target();
+    if (const LossReason reason = area_check(candidate_.area); reason != LossReason::none) {
+        drop_target(reason);
         return true;
     }
     state_ = TrackerState::validating;
@@ -127,7 +147,7 @@ bool StateMachine::on_validating() noexcept {
     // otherwise it has left and the inner point sits on background.
     if (still_too_long() &&
         color_distance(reference_color_, now) > static_cast<float>(settings_.color_tolerance)) {
-        drop_target();
+        drop_target(LossReason::left);
         return true;
     }
     accept(candidate_);
@@ -160,15 +180,16 @@ bool StateMachine::on_recovering() noexcept {
         }
     }
     if (!best) {
-        drop_target();
+        drop_target(LossReason::no_recovery_point);
         return true;
     }
     const Estimate recovered = evidence_->estimate(*best);
     result_.iterations += recovered.iterations;
     const bool matches =
         color_distance(before, evidence_->current_color(recovered.inner)) <= tolerance;
-    if (!matches || !area_in_range(recovered.area)) {
-        drop_target();
+    const LossReason area = area_check(recovered.area);
+    if (!matches || area != LossReason::none) {
+        drop_target(matches ? area : LossReason::recovery_failed);
         return true;
     }
     result_.recovered = true;
@@ -177,9 +198,11 @@ bool StateMachine::on_recovering() noexcept {
     return true;
 }
 
-bool StateMachine::area_in_range(double area) const noexcept {
+LossReason StateMachine::area_check(double area) const noexcept {
     const double fraction = area / working_area_;
-    return fraction >= settings_.min_area && fraction <= settings_.max_area;
+    if (fraction < settings_.min_area) return LossReason::too_small;
+    if (fraction > settings_.max_area) return LossReason::too_large;
+    return LossReason::none;
 }
 
 bool StateMachine::still_too_long() const noexcept {
@@ -187,8 +210,9 @@ bool StateMachine::still_too_long() const noexcept {
            static_cast<double>(now_ - *still_since_) >= settings_.idle_seconds * 1e6;
 }
 
-void StateMachine::drop_target() noexcept {
+void StateMachine::drop_target(LossReason reason) noexcept {
     state_ = TrackerState::searching;
+    result_.loss = reason;
     still_since_.reset();
     result_.has_target = false;
     result_.lost = true;

@@ -54,6 +54,7 @@ FrameResult Tracker::process(const FrameView& frame) noexcept {
     result.iterations = step.iterations;
     result.recovered = step.recovered;
     result.lost = step.lost;
+    result.loss = step.loss;
     if (step.acquired || !step.has_target) d.reference_area.reset();
     if (!step.has_target) return result;
 

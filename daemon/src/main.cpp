@@ -23,6 +23,7 @@ commands:
       --format jsonl|csv     output format (default jsonl)
       --annotate OUT.mp4     also write the video with what the tracker saw
       --fps N                frame rate for the timestamps (default: the container's)
+      --verbose              say on stderr when and why a target is lost or recovered
   demo             render a scene in memory, track it, print the 3D positions and
                    write an annotated clip
       --scene NAME           scene preset (default nonconvex)

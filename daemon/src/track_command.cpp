@@ -24,6 +24,7 @@ struct TrackOptions {
     OutputFormat format = OutputFormat::jsonl;
     std::string annotate;
     double fps = 0.0;
+    bool verbose = false;
 };
 
 TrackOptions parse_track_options(std::span<const std::string_view> args) {
@@ -42,6 +43,8 @@ TrackOptions parse_track_options(std::span<const std::string_view> args) {
             }
         } else if (arg == "--annotate") {
             options.annotate = option_value(args, i);
+        } else if (arg == "--verbose") {
+            options.verbose = true;
         } else if (arg == "--fps") {
             const std::string value(option_value(args, i));
             char* end = nullptr;
@@ -84,6 +87,12 @@ int track_command(std::span<const std::string_view> args) {
         writer.write(result,
                      static_cast<long>(
                          std::chrono::duration_cast<std::chrono::microseconds>(spent).count()));
+        if (options.verbose && (result.lost || result.recovered)) {
+            std::fprintf(stderr, "frame %lld t=%.3f: %s\n", static_cast<long long>(result.frame),
+                         static_cast<double>(result.timestamp) * 1e-6,
+                         result.lost ? ("lost: " + std::string(core::to_string(result.loss))).c_str()
+                                     : "recovered");
+        }
         if (!options.annotate.empty()) {
             if (!annotated) {
                 annotated.emplace(options.annotate, cv::VideoWriter::fourcc('m', 'p', '4', 'v'),

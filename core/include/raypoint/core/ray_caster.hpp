@@ -35,6 +35,11 @@ public:
     // edge pixel (paper: "displaced towards the new centroid until it reaches it or an edge").
     static cv::Point2f walk(const cv::Mat& edges, cv::Point2f from, cv::Point2f to) noexcept;
 
+    // The non-edge pixel nearest to `point` within `radius` pixels, or `point` itself when it is
+    // not on an edge or none is that close. An inner point on an edge casts rays of length 0: it
+    // happens when a detection lands on the moving outline or the target moved onto it.
+    static cv::Point2f off_edge(const cv::Mat& edges, cv::Point2f point, int radius) noexcept;
+
 private:
     // Unit steps along the major axis: each step enters exactly one new row or column.
     std::vector<cv::Point2f> directions_;

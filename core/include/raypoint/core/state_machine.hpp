@@ -37,6 +37,7 @@ struct StepResult {
     bool acquired = false;    // SEARCHING picked a new target this frame
     bool recovered = false;   // RECOVERING succeeded this frame
     bool lost = false;        // the target was dropped this frame
+    LossReason loss = LossReason::none;
     int iterations = 0;
 };
 
@@ -59,9 +60,9 @@ private:
     bool on_validating() noexcept;
     bool on_recovering() noexcept;
 
-    bool area_in_range(double area) const noexcept;
+    LossReason area_check(double area) const noexcept;
     bool still_too_long() const noexcept;
-    void drop_target() noexcept;
+    void drop_target(LossReason reason) noexcept;
     void accept(const Estimate& estimate) noexcept;
 
     TrackingSettings settings_;

@@ -31,6 +31,7 @@ struct FrameResult {
     int iterations = 0;     // estimator iterations spent on this frame
     bool recovered = false;  // RECOVERING ran this frame and succeeded
     bool lost = false;       // the target was dropped this frame
+    LossReason loss = LossReason::none;
 };
 
 // The images of the last processed frame, for drawing and tests (working size).
