@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include <opencv2/imgproc.hpp>
 
@@ -24,10 +29,23 @@ std::uint8_t clamp_byte(int value) noexcept {
 }  // namespace
 
 int brightness_offset(const cv::Mat& difference, int minima) noexcept {
-    std::array<int, 256> histogram{};
+    // Four interleaved histograms: a still scene puts nearly every pixel in one bin, and
+    // incrementing one counter back to back waits for each previous increment.
+    std::array<std::array<int, 256>, 4> partial{};
     for (int y = 0; y < difference.rows; ++y) {
         const std::uint8_t* row = difference.ptr<std::uint8_t>(y);
-        for (int x = 0; x < difference.cols; ++x) ++histogram[row[x]];
+        int x = 0;
+        for (; x + 4 <= difference.cols; x += 4) {
+            ++partial[0][row[x]];
+            ++partial[1][row[x + 1]];
+            ++partial[2][row[x + 2]];
+            ++partial[3][row[x + 3]];
+        }
+        for (; x < difference.cols; ++x) ++partial[0][row[x]];
+    }
+    std::array<int, 256> histogram{};
+    for (int value = 0; value < 256; ++value) {
+        histogram[value] = partial[0][value] + partial[1][value] + partial[2][value] + partial[3][value];
     }
     int distinct = 0;
     int largest = 0;
@@ -47,6 +65,7 @@ Preprocessor::Preprocessor(const PreprocessSettings& settings) : settings_(setti
         gray_[i].create(size, CV_8U);
         gray_[i].setTo(cv::Scalar::all(0));
     }
+    squared_.resize(static_cast<std::size_t>(settings.work_width));
     sobel_x_.create(size, CV_16SC3);
     sobel_y_.create(size, CV_16SC3);
     magnitude_.create(size, CV_8U);
@@ -55,7 +74,6 @@ Preprocessor::Preprocessor(const PreprocessSettings& settings) : settings_(setti
     magnitude_.setTo(cv::Scalar::all(0));
     edges_.setTo(cv::Scalar::all(0));
     difference_.setTo(cv::Scalar::all(0));
-    accumulator_.resize(static_cast<std::size_t>(settings.work_width));
 }
 
 void Preprocessor::prepare(const FrameView& frame) {
@@ -67,9 +85,15 @@ void Preprocessor::prepare(const FrameView& frame) {
     const double radius = settings_.filter_radius * frame.width / reference_width;
     tap_columns_.assign(taps.size(), std::vector<int>(settings_.work_width));
     tap_rows_.assign(taps.size(), std::vector<int>(settings_.work_height));
+    tap_dx_.assign(taps.size(), 0);
+    tap_row_pointers_.assign(taps.size(), nullptr);
+    centre_columns_.resize(static_cast<std::size_t>(settings_.work_width));
+    int reach = 0;
     for (std::size_t t = 0; t < taps.size(); ++t) {
         const int dx = static_cast<int>(std::lround(taps[t].x * radius));
         const int dy = static_cast<int>(std::lround(taps[t].y * radius));
+        tap_dx_[t] = dx;
+        reach = std::max(reach, std::abs(dx));
         for (int x = 0; x < settings_.work_width; ++x) {
             const int column = working_to_input(x, settings_.work_width, frame.width) + dx;
             tap_columns_[t][x] = std::clamp(column, 0, frame.width - 1);
@@ -79,6 +103,18 @@ void Preprocessor::prepare(const FrameView& frame) {
             tap_rows_[t][y] = std::clamp(row, 0, frame.height - 1);
         }
     }
+    interior_begin_ = settings_.work_width;
+    interior_end_ = 0;
+    for (int x = 0; x < settings_.work_width; ++x) {
+        const int centre = working_to_input(x, settings_.work_width, frame.width);
+        centre_columns_[x] = centre;
+        // YUYV reads the pair of a column, one past it at most.
+        if (centre - reach - 1 >= 0 && centre + reach + 1 < frame.width) {
+            interior_begin_ = std::min(interior_begin_, x);
+            interior_end_ = std::max(interior_end_, x + 1);
+        }
+    }
+    if (interior_begin_ >= interior_end_) interior_begin_ = interior_end_ = 0;
 }
 
 bool Preprocessor::process(const FrameView& frame) noexcept {
@@ -114,30 +150,72 @@ bool Preprocessor::process(const FrameView& frame) noexcept {
 }
 
 // The filter is evaluated only at the working pixels' centres: filtering the whole frame and
-// then subsampling gives the same values at 16x the cost for 640x480.
+// then subsampling gives the same values at 16x the cost for 640x480. Working pixel outside,
+// taps inside, so the sums stay in registers; the interior skips the clamped column tables.
 void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
     const auto tap_count = static_cast<unsigned>(tap_columns_.size());
     cv::Mat& out = color_[current_];
     for (int y = 0; y < settings_.work_height; ++y) {
-        std::fill(accumulator_.begin(), accumulator_.end(), std::array<unsigned, 3>{});
         for (unsigned t = 0; t < tap_count; ++t) {
-            const std::uint8_t* row = frame.data + static_cast<std::ptrdiff_t>(tap_rows_[t][y]) *
-                                                       frame.stride;
-            const int* columns = tap_columns_[t].data();
-            for (int x = 0; x < settings_.work_width; ++x) {
-                const std::uint8_t* pixel = row + columns[x] * 3;
-                auto& sum = accumulator_[x];
-                sum[0] += pixel[0];
-                sum[1] += pixel[1];
-                sum[2] += pixel[2];
-            }
+            tap_row_pointers_[t] = frame.data +
+                                   static_cast<std::ptrdiff_t>(tap_rows_[t][y]) * frame.stride;
         }
         auto* target = out.ptr<std::uint8_t>(y);
-        for (int x = 0; x < settings_.work_width; ++x) {
-            for (int c = 0; c < 3; ++c) {
-                target[x * 3 + c] =
-                    static_cast<std::uint8_t>((accumulator_[x][c] + tap_count / 2) / tap_count);
+        const auto store = [&](int x, unsigned b, unsigned g, unsigned r) {
+            target[x * 3 + 0] = static_cast<std::uint8_t>((b + tap_count / 2) / tap_count);
+            target[x * 3 + 1] = static_cast<std::uint8_t>((g + tap_count / 2) / tap_count);
+            target[x * 3 + 2] = static_cast<std::uint8_t>((r + tap_count / 2) / tap_count);
+        };
+        const auto clamped = [&](int x) {
+            unsigned b = 0, g = 0, r = 0;
+            for (unsigned t = 0; t < tap_count; ++t) {
+                const std::uint8_t* pixel = tap_row_pointers_[t] + tap_columns_[t][x] * 3;
+                b += pixel[0];
+                g += pixel[1];
+                r += pixel[2];
             }
+            store(x, b, g, r);
+        };
+        int x = 0;
+        for (; x < interior_begin_; ++x) clamped(x);
+#if defined(__SSE2__)
+        // Two working pixels a step: each tap's B, G, R (and the next pixel's B, ignored) are
+        // one 32-bit load widened to 16-bit lanes; 16 taps x 255 fit in 16 bits. The interior
+        // has a column to spare on the right, so the 4th byte is inside the frame.
+        for (; x + 2 <= interior_end_; x += 2) {
+            const int left = centre_columns_[x] * 3;
+            const int right = centre_columns_[x + 1] * 3;
+            __m128i sum = _mm_setzero_si128();
+            const __m128i zero = _mm_setzero_si128();
+            for (unsigned t = 0; t < tap_count; ++t) {
+                const std::uint8_t* row = tap_row_pointers_[t] + tap_dx_[t] * 3;
+                std::uint32_t a = 0;
+                std::uint32_t b = 0;
+                std::memcpy(&a, row + left, 4);
+                std::memcpy(&b, row + right, 4);
+                const __m128i pair = _mm_unpacklo_epi32(_mm_cvtsi32_si128(static_cast<int>(a)),
+                                                        _mm_cvtsi32_si128(static_cast<int>(b)));
+                sum = _mm_add_epi16(sum, _mm_unpacklo_epi8(pair, zero));
+            }
+            alignas(16) std::uint16_t lanes[8];
+            _mm_store_si128(reinterpret_cast<__m128i*>(lanes), sum);
+            store(x, lanes[0], lanes[1], lanes[2]);
+            store(x + 1, lanes[4], lanes[5], lanes[6]);
+        }
+#endif
+        for (; x < interior_end_; ++x) {
+            const int centre = centre_columns_[x];
+            unsigned b = 0, g = 0, r = 0;
+            for (unsigned t = 0; t < tap_count; ++t) {
+                const std::uint8_t* pixel = tap_row_pointers_[t] + (centre + tap_dx_[t]) * 3;
+                b += pixel[0];
+                g += pixel[1];
+                r += pixel[2];
+            }
+            store(x, b, g, r);
+        }
+        for (x = std::max(interior_end_, interior_begin_); x < settings_.work_width; ++x) {
+            clamped(x);
         }
     }
 }
@@ -148,25 +226,24 @@ void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
     const auto tap_count = static_cast<unsigned>(tap_columns_.size());
     cv::Mat& out = color_[current_];
     for (int y = 0; y < settings_.work_height; ++y) {
-        std::fill(accumulator_.begin(), accumulator_.end(), std::array<unsigned, 3>{});
         for (unsigned t = 0; t < tap_count; ++t) {
-            const std::uint8_t* row = frame.data + static_cast<std::ptrdiff_t>(tap_rows_[t][y]) *
-                                                       frame.stride;
-            const int* columns = tap_columns_[t].data();
-            for (int x = 0; x < settings_.work_width; ++x) {
-                const int column = columns[x];
-                const std::uint8_t* pair = row + (column & ~1) * 2;
-                auto& sum = accumulator_[x];
-                sum[0] += pair[(column & 1) * 2];
-                sum[1] += pair[1];
-                sum[2] += pair[3];
-            }
+            tap_row_pointers_[t] = frame.data +
+                                   static_cast<std::ptrdiff_t>(tap_rows_[t][y]) * frame.stride;
         }
         auto* target = out.ptr<std::uint8_t>(y);
         for (int x = 0; x < settings_.work_width; ++x) {
-            const int luma = static_cast<int>((accumulator_[x][0] + tap_count / 2) / tap_count) - 16;
-            const int u = static_cast<int>((accumulator_[x][1] + tap_count / 2) / tap_count) - 128;
-            const int v = static_cast<int>((accumulator_[x][2] + tap_count / 2) / tap_count) - 128;
+            const bool interior = x >= interior_begin_ && x < interior_end_;
+            unsigned sum_y = 0, sum_u = 0, sum_v = 0;
+            for (unsigned t = 0; t < tap_count; ++t) {
+                const int column = interior ? centre_columns_[x] + tap_dx_[t] : tap_columns_[t][x];
+                const std::uint8_t* pair = tap_row_pointers_[t] + (column & ~1) * 2;
+                sum_y += pair[(column & 1) * 2];
+                sum_u += pair[1];
+                sum_v += pair[3];
+            }
+            const int luma = static_cast<int>((sum_y + tap_count / 2) / tap_count) - 16;
+            const int u = static_cast<int>((sum_u + tap_count / 2) / tap_count) - 128;
+            const int v = static_cast<int>((sum_v + tap_count / 2) / tap_count) - 128;
             const int scaled = 298 * luma + 128;
             target[x * 3 + 0] = clamp_byte((scaled + 516 * u) >> 8);
             target[x * 3 + 1] = clamp_byte((scaled - 100 * u - 208 * v) >> 8);
@@ -197,6 +274,7 @@ void Preprocessor::compute_edges() noexcept {
         const auto* row_y = gy.ptr<std::int16_t>(y);
         auto* magnitude = magnitude_.ptr<std::uint8_t>(y);
         auto* edge = edges_.ptr<std::uint8_t>(y);
+        // Two passes a row, each simple enough for the compiler to vectorize.
         for (int x = 0; x < source.cols; ++x) {
             int strongest = 0;
             for (int c = 0; c < channels; ++c) {
@@ -204,9 +282,12 @@ void Preprocessor::compute_edges() noexcept {
                 const int dy = row_y[x * channels + c];
                 strongest = std::max(strongest, dx * dx + dy * dy);
             }
-            const int value = std::min(255, static_cast<int>(std::sqrt(static_cast<float>(strongest))));
+            squared_[x] = static_cast<float>(strongest);
+        }
+        for (int x = 0; x < source.cols; ++x) {
+            const int value = static_cast<int>(std::min(255.0F, std::sqrt(squared_[x])));
             magnitude[x] = static_cast<std::uint8_t>(value);
-            // Edge pixels keep their magnitude: the raster estimator climbs it to the outline's ridge.
+            // Edge pixels keep their magnitude: the raster estimator climbs it to the ridge.
             edge[x] = value > threshold ? static_cast<std::uint8_t>(value) : 0;
         }
     }

@@ -3,6 +3,7 @@
 // edge image, brightness-compensated absolute difference and the global movement value.
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -56,7 +57,14 @@ private:
     // Per tap, the clamped input column (in pixels) and row of each working column and row.
     std::vector<std::vector<int>> tap_columns_;
     std::vector<std::vector<int>> tap_rows_;
-    std::vector<std::array<unsigned, 3>> accumulator_;  // one working row
+    // Per tap, the column offset from a working pixel's centre; per working column, the input
+    // column of its centre. Working columns in [interior_begin_, interior_end_) need no clamping.
+    std::vector<int> tap_dx_;
+    std::vector<int> centre_columns_;
+    int interior_begin_ = 0;
+    int interior_end_ = 0;
+    std::vector<const std::uint8_t*> tap_row_pointers_;
+    std::vector<float> squared_;  // one row of squared Sobel magnitudes
     std::array<cv::Mat, 2> color_;
     std::array<cv::Mat, 2> gray_;
     int current_ = 0;
