@@ -47,6 +47,7 @@ private:
     void prepare(const FrameView& frame);
     void filter_bgr(const FrameView& frame) noexcept;
     void filter_yuyv(const FrameView& frame) noexcept;
+    void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
     void compute_edges() noexcept;
     void compute_difference() noexcept;
 
@@ -64,7 +65,8 @@ private:
     int interior_begin_ = 0;
     int interior_end_ = 0;
     std::vector<const std::uint8_t*> tap_row_pointers_;
-    std::vector<float> squared_;  // one row of squared Sobel magnitudes
+    std::vector<float> squared_;
+    std::vector<int> last_tap_row_;  // per working row, the lowest input row a tap reads  // one row of squared Sobel magnitudes
     std::array<cv::Mat, 2> color_;
     std::array<cv::Mat, 2> gray_;
     int current_ = 0;
