@@ -9,7 +9,6 @@ Settings paper_settings() {
     settings.tracking.search_threshold = 57600.0;
     settings.tracking.min_area = 0.02;
     settings.estimator.area_mode = AreaMode::blocks;
-    settings.estimator.edge_escape = 0;
     settings.tracking.keep_still_target = false;
     settings.tracking.search_weighting = SearchWeighting::all;
     settings.output.smoothing = SmoothingKind::ema;
