@@ -72,6 +72,7 @@ Preprocessor::Preprocessor(const PreprocessSettings& settings) : settings_(setti
     magnitude_.create(size, CV_8U);
     edges_.create(size, CV_8U);
     difference_.create(size, CV_8U);
+    color_difference_.create(size, CV_8UC3);
     magnitude_.setTo(cv::Scalar::all(0));
     edges_.setTo(cv::Scalar::all(0));
     difference_.setTo(cv::Scalar::all(0));
@@ -336,7 +337,21 @@ void Preprocessor::compute_difference() noexcept {
         offset_ = 0;
         return;
     }
-    cv::absdiff(gray_[current_], gray_[1 - current_], difference_);
+    switch (settings_.difference_source) {
+        case EdgeSource::luma:
+            cv::absdiff(gray_[current_], gray_[1 - current_], difference_);
+            break;
+        case EdgeSource::max_channel:
+            cv::absdiff(color_[current_], color_[1 - current_], color_difference_);
+            for (int y = 0; y < difference_.rows; ++y) {
+                const auto* in = color_difference_.ptr<std::uint8_t>(y);
+                auto* out = difference_.ptr<std::uint8_t>(y);
+                for (int x = 0; x < difference_.cols; ++x) {
+                    out[x] = std::max({in[3 * x], in[3 * x + 1], in[3 * x + 2]});
+                }
+            }
+            break;
+    }
     offset_ = brightness_offset(difference_, settings_.compensation_minima);
     double sum = 0.0;
     for (int y = 0; y < difference_.rows; ++y) {

@@ -76,6 +76,7 @@ private:
     cv::Mat magnitude_;
     cv::Mat edges_;
     cv::Mat difference_;
+    cv::Mat color_difference_;
     double movement_ = 0.0;
     int offset_ = 0;
 };

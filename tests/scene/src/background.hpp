@@ -1,0 +1,15 @@
+#pragma once
+// The static scene behind the target, as the lens forms it (before vignetting, exposure gain
+// and sensor noise). Procedural and deterministic from the seed: no file is read.
+
+#include <cstdint>
+
+#include <opencv2/core.hpp>
+
+namespace raypoint::scene {
+
+// CV_32FC3, BGR grey levels 0..255 at full light.
+cv::Mat make_plain_board(cv::Size size, std::uint64_t seed);
+cv::Mat make_room(cv::Size size, std::uint64_t seed);
+
+}  // namespace raypoint::scene

@@ -1,0 +1,247 @@
+#include "raypoint/scene/renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "background.hpp"
+#include "camera.hpp"
+#include "measure.hpp"
+#include "photometry.hpp"
+#include "placement.hpp"
+#include "rng.hpp"
+#include "sprite.hpp"
+#include "trajectory.hpp"
+
+namespace raypoint::scene {
+
+struct Renderer::Assets {
+    Camera camera;
+    std::shared_ptr<const Sprite> sprite;
+    Trajectory trajectory;
+    cv::Mat vignette;    // CV_32F
+    cv::Mat background;  // CV_32FC3, vignetted, at full light
+    NoisePool noise;
+
+    explicit Assets(const SceneSpec& spec)
+        : camera{spec.width, spec.height},
+          sprite(shared_sprite(spec.target, spec.target_colour.value_or(
+                                                default_colour(spec.target, spec.background)))),
+          trajectory(spec, camera, *sprite),
+          vignette(make_vignette({spec.width, spec.height})),
+          noise({spec.width, spec.height}, spec.noise_sigma, spec.seed) {
+        const cv::Size size(spec.width, spec.height);
+        const std::uint64_t seed = mix_seed(spec.seed, 1);
+        switch (spec.background) {
+            case Background::plain:
+                background = make_plain_board(size, seed);
+                break;
+            case Background::cluttered:
+                background = make_room(size, seed);
+                break;
+        }
+        cv::Mat vignette3;
+        cv::merge(std::vector<cv::Mat>{vignette, vignette, vignette}, vignette3);
+        background = background.mul(vignette3);
+    }
+};
+
+namespace {
+
+constexpr double blur_step_px = 2.0;  // sub-frame spacing: larger steps show as ghost edges
+constexpr int max_sub_frames = 12;
+constexpr int sensor_band_rows = 16;
+
+void check(bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument("SceneSpec: " + what);
+}
+
+void validate(const SceneSpec& s) {
+    check(s.width >= 16 && s.height >= 16 && s.width <= 8192 && s.height <= 8192,
+          "width and height must be 16..8192 pixels");
+    check(s.fps > 0 && s.fps <= 1000, "fps must be in (0, 1000]");
+    check(s.seconds >= 0 && s.seconds * s.fps < 1e6, "seconds must be >= 0 (and not huge)");
+    check(s.empty_seconds >= 0, "empty_seconds must be >= 0");
+    check(s.noise_sigma >= 0, "noise_sigma must be >= 0");
+    check(s.blur >= 0 && s.blur <= 1, "blur must be in [0, 1] (a fraction of the frame interval)");
+    check(s.jpeg_quality >= 0 && s.jpeg_quality <= 100, "jpeg_quality must be 0..100");
+    check(s.brightness_jump > -1, "brightness_jump must be > -1");
+    check(s.darkness > 0, "darkness must be > 0");
+    check(s.speed > 0, "speed must be > 0");
+    check(s.target_size_m > 0, "target_size_m must be > 0");
+    check(s.push_depth >= 0 && s.push_depth < 1, "push_depth must be in [0, 1)");
+    check(s.push_seconds > 0, "push_seconds must be > 0");
+    for (const Hold& h : s.holds)
+        check(h.seconds >= 0, "a hold's seconds must be >= 0");
+    for (std::size_t i = 0; i < s.path.size(); ++i) {
+        check(s.path[i].depth > 0, "keyframe depths must be > 0");
+        check(i == 0 || s.path[i].t > s.path[i - 1].t, "keyframe times must increase");
+    }
+}
+
+// How far (pixels) any corner of the outline box travels between two poses.
+double travel_px(const Placement& a, const Placement& b) {
+    double most = 0;
+    const auto ca = a.corners();
+    const auto cb = b.corners();
+    for (std::size_t i = 0; i < ca.size(); ++i)
+        most = std::max(most, cv::norm(ca[i] - cb[i]));
+    return most;
+}
+
+std::optional<Placement> place(const Renderer::Assets& a, const SceneSpec& spec, double when) {
+    const std::optional<Pose> pose = a.trajectory.at(when);
+    if (!pose) return std::nullopt;
+    return Placement(*a.sprite, a.camera, spec.target_size_m, *pose);
+}
+
+// Motion blur: sub-frames spread evenly over the exposure, which is centred on t, enough of
+// them that the outline steps at most ~blur_step_px from one to the next. Sub-frames before
+// the target exists have no placement but still count.
+struct SubFrames {
+    std::vector<Placement> placements;
+    int count = 1;
+};
+
+SubFrames exposure_placements(const Renderer::Assets& a, const SceneSpec& spec, double t) {
+    const double exposure = spec.blur / spec.fps;
+    int count = 1;
+    if (exposure > 0) {
+        const auto first = place(a, spec, t - exposure / 2);
+        const auto last = place(a, spec, t + exposure / 2);
+        if (first && last) {
+            const double steps = std::ceil(travel_px(*first, *last) / blur_step_px);
+            count = std::clamp(static_cast<int>(steps) + 1, 1, max_sub_frames);
+        }
+    }
+    SubFrames subs;
+    subs.count = count;
+    for (int k = 0; k < count; ++k) {
+        const double when = count == 1 ? t : t - exposure / 2 + exposure * (k + 0.5) / count;
+        if (auto p = place(a, spec, when)) subs.placements.push_back(*p);
+    }
+    return subs;
+}
+
+// CV_32FC3 light over roi (full light, vignetted): the background with the target blended
+// in by its coverage averaged over the sub-frames. One colour sample serves the whole
+// exposure: shading barely moves within it.
+cv::Mat composite(const Renderer::Assets& a, cv::Rect roi, const SubFrames& subs,
+                  const Placement& colour_from) {
+    cv::Mat coverage = cv::Mat::zeros(roi.size(), CV_32F);
+    for (const Placement& p : subs.placements) {
+        p.add_coverage(roi, 1.0f / static_cast<float>(subs.count), coverage);
+    }
+    const cv::Mat colour = colour_from.colour(roi);
+    cv::Mat light = a.background(roi).clone();
+    for (int y = 0; y < roi.height; ++y) {
+        const auto* c = coverage.ptr<float>(y);
+        const auto* col = colour.ptr<cv::Vec3f>(y);
+        const auto* v = a.vignette.ptr<float>(roi.y + y) + roi.x;
+        auto* px = light.ptr<cv::Vec3f>(y);
+        for (int x = 0; x < roi.width; ++x) {
+            if (c[x] > 0) px[x] += c[x] * (col[x] * v[x] - px[x]);
+        }
+    }
+    return light;
+}
+
+// The sensor: exposure gain on the light plus noise, rounded and clipped to 8 bits, in bands
+// of rows so that no frame-sized float buffer is needed. target (over roi) may be empty.
+cv::Mat expose(const Renderer::Assets& a, const SceneSpec& spec, int index, const cv::Mat& target,
+               cv::Rect roi) {
+    const double gain = exposure_gain(spec, index / spec.fps);
+    const cv::Mat noise = a.noise.empty() ? cv::Mat() : a.noise.frame_noise(index);
+    cv::Mat bgr(spec.height, spec.width, CV_8UC3);
+    cv::Mat light;
+    for (int top = 0; top < spec.height; top += sensor_band_rows) {
+        const cv::Rect band(0, top, spec.width, std::min(sensor_band_rows, spec.height - top));
+        a.background(band).copyTo(light);
+        const cv::Rect overlap = band & roi;
+        if (!target.empty() && !overlap.empty()) {
+            cv::Mat part = light(overlap - band.tl());
+            target(overlap - roi.tl()).copyTo(part);
+        }
+        cv::Mat out = bgr(band);
+        if (noise.empty()) {
+            light.convertTo(out, CV_8UC3, gain);
+        } else {
+            cv::scaleAdd(light, gain, noise(band), light);
+            light.convertTo(out, CV_8UC3);
+        }
+    }
+    if (spec.jpeg_quality > 0) {
+        std::vector<std::uint8_t> bytes;
+        cv::imencode(".jpg", bgr, bytes, {cv::IMWRITE_JPEG_QUALITY, spec.jpeg_quality});
+        bgr = cv::imdecode(bytes, cv::IMREAD_COLOR);
+    }
+    return bgr;
+}
+
+}  // namespace
+
+Renderer::Renderer(SceneSpec spec) : spec_(std::move(spec)) {
+    validate(spec_);
+    assets_ = std::make_shared<const Assets>(spec_);
+}
+
+int Renderer::frame_count() const {
+    return static_cast<int>(std::lround(spec_.seconds * spec_.fps));
+}
+
+double Renderer::frame_time(int index) const {
+    return index / spec_.fps;
+}
+
+const SceneSpec& Renderer::spec() const {
+    return spec_;
+}
+
+RenderedFrame Renderer::render(int index) const {
+    if (index < 0 || index >= frame_count()) {
+        throw std::out_of_range("Renderer::render: frame " + std::to_string(index) + " of " +
+                                std::to_string(frame_count()));
+    }
+    const Assets& a = *assets_;
+    const cv::Rect frame_rect(0, 0, spec_.width, spec_.height);
+    const double t = frame_time(index);
+    const SubFrames subs = exposure_placements(a, spec_, t);
+    const std::optional<Placement> mid = place(a, spec_, t);
+
+    cv::Rect roi;
+    for (const Placement& p : subs.placements)
+        roi |= p.bounds();
+    if (mid) roi |= mid->bounds();
+    roi &= frame_rect;
+
+    RenderedFrame out;
+    cv::Mat target;
+    if (!roi.empty() && !subs.placements.empty()) {
+        target = composite(a, roi, subs, mid ? *mid : subs.placements.back());
+    }
+    out.bgr = expose(a, spec_, index, target, roi);
+
+    out.mask = cv::Mat::zeros(spec_.height, spec_.width, CV_8U);
+    if (mid && !roi.empty()) mid->mask(roi).copyTo(out.mask(roi));
+    out.truth = measure_mask(out.mask(roi), roi.tl(), frame_rect.size());
+    out.truth.frame = index;
+    out.truth.t = t;
+    if (!out.truth.present) return out;
+    out.truth.depth = a.trajectory.at(t)->depth;
+    if (const auto before = index > 0 ? place(a, spec_, frame_time(index - 1)) : std::nullopt) {
+        const cv::Rect prev_roi = before->bounds() & frame_rect;
+        if (!prev_roi.empty()) {
+            const Truth previous =
+                measure_mask(before->mask(prev_roi), prev_roi.tl(), frame_rect.size());
+            out.truth.moving = has_moved(previous, out.truth);
+        }
+    }
+    return out;
+}
+
+}  // namespace raypoint::scene
