@@ -1,0 +1,129 @@
+#pragma once
+// Transcript tests for the state machine: a scripted FrameEvidence, one table row a frame.
+// Frame features in (time, movement, detection, estimates, colours), state and events out.
+
+#include <cmath>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "raypoint/core/state_machine.hpp"
+
+namespace raypoint::test {
+
+using core::Estimate;
+using core::LossReason;
+using core::TrackerState;
+
+// What current_color(at) answers in one frame: `fallback` except at the listed spots.
+struct Paint {
+    cv::Vec3f fallback;
+    std::vector<std::pair<cv::Point2f, cv::Vec3f>> spots;
+
+    cv::Vec3f at(cv::Point2f p) const {
+        for (const auto& [where, colour] : spots) {
+            if (std::abs(where.x - p.x) < 0.5F && std::abs(where.y - p.y) < 0.5F) return colour;
+        }
+        return fallback;
+    }
+};
+
+// What the frame did besides its state.
+enum class Event { none, acquired, recovered, too_small, too_large, still, left, no_point, failed };
+
+struct Row {
+    double seconds;
+    double movement;
+    std::optional<cv::Point2f> detect;
+    std::vector<Estimate> estimates;  // answers to successive estimate() calls
+    Paint paint;                      // this frame; previous_color() reads the previous row's
+    TrackerState state;               // expected after the frame
+    Event event = Event::none;
+};
+
+// Records every question the state machine asks.
+class Script final : public core::FrameEvidence {
+  public:
+    const Row* row = nullptr;
+    const Paint* before = nullptr;
+    std::size_t used = 0;
+    std::vector<cv::Point2f> estimated_at;
+    mutable std::vector<cv::Point2f> painted_at;
+
+    double movement() const noexcept override { return row->movement; }
+    std::optional<cv::Point2f> detect() noexcept override { return row->detect; }
+    Estimate estimate(cv::Point2f inner) noexcept override {
+        estimated_at.push_back(inner);
+        if (used >= row->estimates.size()) {
+            ADD_FAILURE() << "unscripted estimate() at " << inner;
+            return Estimate{inner, 0.0, inner, 1};
+        }
+        return row->estimates[used++];
+    }
+    cv::Vec3f current_color(cv::Point2f at) const noexcept override {
+        painted_at.push_back(at);
+        return row->paint.at(at);
+    }
+    cv::Vec3f previous_color(cv::Point2f at) const noexcept override {
+        return before != nullptr ? before->at(at) : cv::Vec3f();
+    }
+};
+
+struct Played {
+    std::vector<core::StepResult> results;
+    std::vector<std::vector<cv::Point2f>> estimated_at;  // per frame
+    std::vector<std::vector<cv::Point2f>> painted_at;    // per frame
+};
+
+inline Event event_of(const core::StepResult& r) {
+    if (r.acquired) return Event::acquired;
+    if (r.recovered) return Event::recovered;
+    switch (r.loss) {
+        case LossReason::none:
+            return r.lost ? Event::failed : Event::none;
+        case LossReason::too_small:
+            return Event::too_small;
+        case LossReason::too_large:
+            return Event::too_large;
+        case LossReason::still:
+            return Event::still;
+        case LossReason::left:
+            return Event::left;
+        case LossReason::no_recovery_point:
+            return Event::no_point;
+        case LossReason::recovery_failed:
+            return Event::failed;
+    }
+    return Event::none;
+}
+
+// Steps `machine` through `rows`, checking each row's state and event.
+inline Played play(core::StateMachine& machine, const std::vector<Row>& rows) {
+    Played played;
+    const Paint* before = nullptr;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const Row& row = rows[i];
+        SCOPED_TRACE(::testing::Message() << "frame " << i << " at " << row.seconds << " s");
+        Script script;
+        script.row = &row;
+        script.before = before;
+        const auto result =
+            machine.step(static_cast<core::Timestamp>(std::llround(row.seconds * 1e6)), script);
+        EXPECT_EQ(core::to_string(result.state), core::to_string(row.state));
+        EXPECT_EQ(static_cast<int>(event_of(result)), static_cast<int>(row.event));
+        EXPECT_EQ(result.lost, row.event >= Event::too_small);
+        EXPECT_EQ(result.has_target, result.state == TrackerState::tracking);
+        // The frame a search picks its target has no area; every other target frame has one.
+        EXPECT_EQ(result.area_known, result.has_target && !result.acquired);
+        EXPECT_EQ(script.used, row.estimates.size()) << "scripted estimates left unused";
+        played.results.push_back(result);
+        played.estimated_at.push_back(script.estimated_at);
+        played.painted_at.push_back(script.painted_at);
+        before = &row.paint;
+    }
+    return played;
+}
+
+}  // namespace raypoint::test
