@@ -42,19 +42,23 @@ double median(std::vector<double> values) {
     return *middle;
 }
 
-// Start points inside the working-size mask: the widest place (the point farthest from the
-// outline) and an isolated one (the inside point farthest from the widest: a fingertip of the
-// hand, the rim of the sphere), both at least 1.5 px from the outline.
-void start_points(const cv::Mat& mask, cv::Point2f& wide, cv::Point2f& isolated) {
+// Start points inside the target and off its edge band (the band lies partly inside the mask,
+// and rays from an edge pixel have no length): the widest place (farthest from the band and
+// the outline) and an isolated one (the open inside point farthest from the widest: a
+// fingertip of the hand, the rim of the sphere).
+void start_points(const cv::Mat& mask, const cv::Mat& edges, cv::Point2f& wide,
+                  cv::Point2f& isolated) {
+    cv::Mat open = mask.clone();
+    open.setTo(0, edges);
     cv::Mat distance;
-    cv::distanceTransform(mask, distance, cv::DIST_L2, 3);
+    cv::distanceTransform(open, distance, cv::DIST_L2, 3);
     cv::Point widest;
     cv::minMaxLoc(distance, nullptr, nullptr, nullptr, &widest);
     wide = cv::Point2f(static_cast<float>(widest.x), static_cast<float>(widest.y));
     double farthest = -1.0;
     for (int y = 0; y < mask.rows; ++y) {
         for (int x = 0; x < mask.cols; ++x) {
-            if (distance.at<float>(y, x) < 1.5F) continue;
+            if (distance.at<float>(y, x) < 1.0F) continue;
             const double d = std::hypot(x - widest.x, y - widest.y);
             if (d > farthest) {
                 farthest = d;
@@ -76,11 +80,14 @@ std::string run(const config::Config& config, const std::vector<Contender>& cont
         for (int i = 0; i < renderer.frame_count(); ++i) {
             if (renderer.frame_time(i) >= spec.empty_seconds + 1.0) frames.push_back(i);
         }
-        const std::size_t step = std::max<std::size_t>(1, frames.size() / samples_wanted);
+        const std::size_t step =
+            std::max<std::size_t>(1, (frames.size() + samples_wanted - 1) / samples_wanted);
         std::vector<std::array<Tally, 2>> tallies(contenders.size());
+        int sampled = 0;
         for (std::size_t f = 0; f < frames.size(); f += step) {
             const scene::RenderedFrame frame = renderer.render(frames[f]);
             if (!frame.truth.present) continue;
+            ++sampled;
             core::Preprocessor preprocessor(preprocess);
             preprocessor.process({frame.bgr.data, frame.bgr.cols, frame.bgr.rows,
                                   static_cast<int>(frame.bgr.step), core::PixelFormat::bgr, 0});
@@ -88,7 +95,7 @@ std::string run(const config::Config& config, const std::vector<Contender>& cont
             cv::resize(frame.mask, mask, working, 0, 0, cv::INTER_AREA);
             cv::threshold(mask, mask, 127, 255, cv::THRESH_BINARY);
             cv::Point2f starts[2];
-            start_points(mask, starts[0], starts[1]);
+            start_points(mask, preprocessor.edges(), starts[0], starts[1]);
             // Truth in working pixel-centre coordinates and square working pixels.
             const cv::Point2f centroid(static_cast<float>(frame.truth.cx * working.width - 0.5),
                                        static_cast<float>(frame.truth.cy * working.height - 0.5));
@@ -123,7 +130,7 @@ std::string run(const config::Config& config, const std::vector<Contender>& cont
         const char* target = std::string(scene_name) == "ideal" ? "convex (sphere)"
                                                                  : "non-convex (hand)";
         for (int s = 0; s < 2; ++s) {
-            out << "\n### " << target << ", inner point started "
+            out << "\n### " << target << " (" << sampled << " frames), inner point started "
                 << (s == 0 ? "in the widest area" : "in an isolated area (fingertip / rim)")
                 << "\n\n| estimator | centroid error px (median) | area error (median) | "
                    "centroid on target | iterations (median) | us (median) |\n"
@@ -177,8 +184,7 @@ int compare_command(std::span<const std::string_view> args) {
            "hand. The paper (section 3) claims each estimator beats the one before; this is what "
            "they do on the project's own rendered scenes (`ideal`: a sphere; `nonconvex`: a "
            "paper hand with spread fingers; both on a white board, 640x480), "
-        << samples
-        << " frames each, after the default preprocessing (160x120, edges over "
+        << "about " << samples << " frames each, after the default preprocessing (160x120, edges over "
         << config.core.preprocess.edge_threshold << "). n = " << e.rays << ", y = " << e.recasts
         << ", m = " << e.block_size << ", at most " << e.max_iterations
         << " iterations, tolerance " << e.tolerance
