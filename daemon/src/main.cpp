@@ -22,7 +22,8 @@ commands:
                    one line a frame on stdout
       --format jsonl|csv     output format (default jsonl)
       --annotate OUT.mp4     also write the video with what the tracker saw
-      --fps N                frame rate for the timestamps (default: the container's)
+      --fps N                frame rate for the timestamps (default: the
+                             container's; 30 for an image sequence)
       --verbose              say on stderr when and why a target is lost or recovered
   demo             render a scene in memory, track it, print the 3D positions and
                    write an annotated clip

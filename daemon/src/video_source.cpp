@@ -5,6 +5,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include <opencv2/core/utils/logger.hpp>
+
 #include "errors.hpp"
 
 namespace raypoint::daemon {
@@ -12,9 +14,10 @@ namespace raypoint::daemon {
 namespace fs = std::filesystem;
 
 VideoSource::VideoSource(const std::string& path, double fps) : path_(path) {
-    // FFmpeg writes its own diagnostics to stderr; ours are the one line that matters.
+    // FFmpeg and OpenCV write their own diagnostics to stderr; ours are the one line that
+    // matters.
     setenv("OPENCV_FFMPEG_LOGLEVEL", "-8", 0);
-    setenv("OPENCV_LOG_LEVEL", "SILENT", 0);
+    cv::utils::logging::setLogLevel(cv::utils::logging::LOG_LEVEL_SILENT);
     const bool sequence = path.find('%') != std::string::npos;
     if (!sequence) {
         std::error_code error;
@@ -32,7 +35,9 @@ VideoSource::VideoSource(const std::string& path, double fps) : path_(path) {
     }
     const double container_fps = capture_.get(cv::CAP_PROP_FPS);
     fixed_rate_ = fps > 0.0 || sequence;
-    fps_ = fps > 0.0 ? fps : (container_fps > 0.0 && container_fps < 1000.0 ? container_fps : 30.0);
+    // An image sequence has no frame rate of its own (OpenCV reports 1): 30 unless --fps.
+    const bool usable = !sequence && container_fps > 0.0 && container_fps < 1000.0;
+    fps_ = fps > 0.0 ? fps : (usable ? container_fps : 30.0);
     frame_count_ = std::max(0, static_cast<int>(capture_.get(cv::CAP_PROP_FRAME_COUNT)));
     size_ = {static_cast<int>(capture_.get(cv::CAP_PROP_FRAME_WIDTH)),
              static_cast<int>(capture_.get(cv::CAP_PROP_FRAME_HEIGHT))};
