@@ -36,10 +36,10 @@ const std::vector<Key>& schema() {
             {{EdgeSource::luma, "luma"}, {EdgeSource::max_channel, "max-channel"}},
             [](auto& c) -> auto& { return c.core.preprocess.edge_source; }),
         choice_key<EdgeSource>(
-            "preprocess", "difference_source",
-            "difference image from the grey images (paper) or the largest channel difference",
+            "preprocess", "movement_source",
+            "movement value from the grey difference (paper) or the largest channel difference",
             {{EdgeSource::luma, "luma"}, {EdgeSource::max_channel, "max-channel"}},
-            [](auto& c) -> auto& { return c.core.preprocess.difference_source; }),
+            [](auto& c) -> auto& { return c.core.preprocess.movement_source; }),
         integer_key("preprocess", "compensation_minima", 1, 255,
                     "distinct minima of the difference image whose largest is the brightness change",
                     [](auto& c) -> auto& { return c.core.preprocess.compensation_minima; }),

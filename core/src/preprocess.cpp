@@ -66,13 +66,12 @@ Preprocessor::Preprocessor(const PreprocessSettings& settings) : settings_(setti
         gray_[i].create(size, CV_8U);
         gray_[i].setTo(cv::Scalar::all(0));
     }
-    squared_.resize(static_cast<std::size_t>(settings.work_width));
-    sobel_x_.create(size, CV_16SC3);
-    sobel_y_.create(size, CV_16SC3);
+    squared_channels_.resize(static_cast<std::size_t>(settings.work_width) * 3);
     magnitude_.create(size, CV_8U);
     edges_.create(size, CV_8U);
     difference_.create(size, CV_8U);
     color_difference_.create(size, CV_8UC3);
+    channel_difference_.create(size, CV_8U);
     magnitude_.setTo(cv::Scalar::all(0));
     edges_.setTo(cv::Scalar::all(0));
     difference_.setTo(cv::Scalar::all(0));
@@ -289,40 +288,47 @@ void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
     }
 }
 
-// Sobel 3x3 on each channel; the magnitude is the L2 norm, saturated to 8 bits as in a grey
-// edge image. EdgeSource::luma uses the grey image's gradient (paper 4.1); max_channel the
-// strongest channel's, which keeps a skin hand's outline over a background of equal brightness.
+// Sobel 3x3 on each channel, replicated border; the magnitude is the L2 norm, saturated to 8
+// bits as in a grey edge image. EdgeSource::luma uses the grey image's gradient (paper 4.1);
+// max_channel the strongest channel's, which keeps a skin hand's outline over a background of
+// equal brightness. Written out rather than cv::Sobel, which allocates its filter every call.
 void Preprocessor::compute_edges() noexcept {
     const bool per_channel = settings_.edge_source == EdgeSource::max_channel;
     const cv::Mat& source = per_channel ? color_[current_] : gray_[current_];
     const int channels = per_channel ? 3 : 1;
-    cv::Mat gx = sobel_x_;
-    cv::Mat gy = sobel_y_;
-    if (!per_channel) {
-        // Reuse the 3-channel buffers' memory as single-channel images of the same size.
-        gx = cv::Mat(source.size(), CV_16S, sobel_x_.data);
-        gy = cv::Mat(source.size(), CV_16S, sobel_y_.data);
-    }
-    cv::Sobel(source, gx, CV_16S, 1, 0, 3, 1.0, 0.0, cv::BORDER_REPLICATE);
-    cv::Sobel(source, gy, CV_16S, 0, 1, 3, 1.0, 0.0, cv::BORDER_REPLICATE);
+    const int width = source.cols;
+    const int height = source.rows;
+    const int row_length = width * channels;
     const int threshold = settings_.edge_threshold;
-    for (int y = 0; y < source.rows; ++y) {
-        const auto* row_x = gx.ptr<std::int16_t>(y);
-        const auto* row_y = gy.ptr<std::int16_t>(y);
+    for (int y = 0; y < height; ++y) {
+        const std::uint8_t* above = source.ptr<std::uint8_t>(std::max(y - 1, 0));
+        const std::uint8_t* here = source.ptr<std::uint8_t>(y);
+        const std::uint8_t* below = source.ptr<std::uint8_t>(std::min(y + 1, height - 1));
+        // Squared gradient of every channel sample; the border columns repeat their neighbour.
+        const auto gradient = [&](int i, int left, int right) {
+            const int gx = (above[right] + 2 * here[right] + below[right]) -
+                           (above[left] + 2 * here[left] + below[left]);
+            const int gy = (below[left] + 2 * below[i] + below[right]) -
+                           (above[left] + 2 * above[i] + above[right]);
+            return gx * gx + gy * gy;
+        };
+        for (int i = 0; i < channels; ++i) {
+            squared_channels_[i] = gradient(i, i, i + channels);
+            const int last = row_length - channels + i;
+            squared_channels_[last] = gradient(last, last - channels, last);
+        }
+        for (int i = channels; i < row_length - channels; ++i) {
+            squared_channels_[i] = gradient(i, i - channels, i + channels);
+        }
         auto* magnitude = magnitude_.ptr<std::uint8_t>(y);
         auto* edge = edges_.ptr<std::uint8_t>(y);
-        // Two passes a row, each simple enough for the compiler to vectorize.
-        for (int x = 0; x < source.cols; ++x) {
-            int strongest = 0;
-            for (int c = 0; c < channels; ++c) {
-                const int dx = row_x[x * channels + c];
-                const int dy = row_y[x * channels + c];
-                strongest = std::max(strongest, dx * dx + dy * dy);
+        for (int x = 0; x < width; ++x) {
+            int strongest = squared_channels_[x * channels];
+            for (int c = 1; c < channels; ++c) {
+                strongest = std::max(strongest, squared_channels_[x * channels + c]);
             }
-            squared_[x] = static_cast<float>(strongest);
-        }
-        for (int x = 0; x < source.cols; ++x) {
-            const int value = static_cast<int>(std::min(255.0F, std::sqrt(squared_[x])));
+            const int value =
+                static_cast<int>(std::min(255.0F, std::sqrt(static_cast<float>(strongest))));
             magnitude[x] = static_cast<std::uint8_t>(value);
             // Edge pixels keep their magnitude: the raster estimator climbs it to the ridge.
             edge[x] = value > threshold ? static_cast<std::uint8_t>(value) : 0;
@@ -330,6 +336,25 @@ void Preprocessor::compute_edges() noexcept {
     }
 }
 
+// Subtracts the brightness change (paper 4.1) in place and returns the sum left.
+double Preprocessor::compensate(cv::Mat& difference) noexcept {
+    offset_ = brightness_offset(difference, settings_.compensation_minima);
+    double sum = 0.0;
+    for (int y = 0; y < difference.rows; ++y) {
+        auto* row = difference.ptr<std::uint8_t>(y);
+        for (int x = 0; x < difference.cols; ++x) {
+            const int value = std::max(0, row[x] - offset_);
+            row[x] = static_cast<std::uint8_t>(value);
+            sum += value;
+        }
+    }
+    return sum;
+}
+
+// The difference image is the grey one (paper 4.1): its centre of mass picks the target, and
+// the target is what contrasts most. The movement value that starts a search may come from
+// the largest per-channel difference instead, which also sees a skin hand move over a wall of
+// its own brightness.
 void Preprocessor::compute_difference() noexcept {
     if (!has_previous()) {
         difference_.setTo(cv::Scalar::all(0));
@@ -337,32 +362,24 @@ void Preprocessor::compute_difference() noexcept {
         offset_ = 0;
         return;
     }
-    switch (settings_.difference_source) {
+    switch (settings_.movement_source) {
         case EdgeSource::luma:
-            cv::absdiff(gray_[current_], gray_[1 - current_], difference_);
             break;
         case EdgeSource::max_channel:
             cv::absdiff(color_[current_], color_[1 - current_], color_difference_);
-            for (int y = 0; y < difference_.rows; ++y) {
+            for (int y = 0; y < channel_difference_.rows; ++y) {
                 const auto* in = color_difference_.ptr<std::uint8_t>(y);
-                auto* out = difference_.ptr<std::uint8_t>(y);
-                for (int x = 0; x < difference_.cols; ++x) {
+                auto* out = channel_difference_.ptr<std::uint8_t>(y);
+                for (int x = 0; x < channel_difference_.cols; ++x) {
                     out[x] = std::max({in[3 * x], in[3 * x + 1], in[3 * x + 2]});
                 }
             }
+            movement_ = compensate(channel_difference_);
             break;
     }
-    offset_ = brightness_offset(difference_, settings_.compensation_minima);
-    double sum = 0.0;
-    for (int y = 0; y < difference_.rows; ++y) {
-        auto* row = difference_.ptr<std::uint8_t>(y);
-        for (int x = 0; x < difference_.cols; ++x) {
-            const int value = std::max(0, row[x] - offset_);
-            row[x] = static_cast<std::uint8_t>(value);
-            sum += value;
-        }
-    }
-    movement_ = sum;
+    cv::absdiff(gray_[current_], gray_[1 - current_], difference_);
+    const double luma_movement = compensate(difference_);
+    if (settings_.movement_source == EdgeSource::luma) movement_ = luma_movement;
 }
 
 }  // namespace raypoint::core

@@ -22,9 +22,8 @@ RayCaster::RayCaster(int rays) {
 cv::Point2f RayCaster::walk(const cv::Mat& edges, cv::Point2f from, cv::Point2f to) noexcept {
     const cv::Point2f delta = to - from;
     const float major = std::max(std::abs(delta.x), std::abs(delta.y));
-    if (major < 1.0F) return to;
     const int steps = static_cast<int>(std::floor(major));
-    const cv::Point2f d = delta / major;
+    const cv::Point2f d = major > 0.0F ? delta / major : cv::Point2f();
     cv::Point2f position = from;
     for (int i = 1; i <= steps; ++i) {
         const cv::Point2f next = from + d * static_cast<float>(i);

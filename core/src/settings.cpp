@@ -5,7 +5,7 @@ namespace raypoint::core {
 Settings paper_settings() {
     Settings settings;
     settings.preprocess.edge_source = EdgeSource::luma;
-    settings.preprocess.difference_source = EdgeSource::luma;
+    settings.preprocess.movement_source = EdgeSource::luma;
     settings.preprocess.edge_threshold = 128;
     settings.tracking.search_threshold = 57600.0;
     settings.tracking.min_area = 0.02;

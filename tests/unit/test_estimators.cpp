@@ -251,11 +251,6 @@ TEST(RayCaster, WalkStopsBeforeAnEdgeOrReachesItsTarget) {
 }
 
 TEST(RayCaster, WalkNeverEndsOnAnEdgeEvenForSubPixelMoves) {
-    GTEST_SKIP() << "BUG: RayCaster::walk returns `to` unchecked when it is less than 1 px "
-                    "away (core/src/ray_caster.cpp, `if (major < 1.0F) return to;`): from "
-                    "(79, 50) to (79.6, 50) it ends on the edge pixel (80, 50). Fix: check the "
-                    "rounded `to` like the final step does and return `from` when it is an edge "
-                    "or outside the image.";
     const cv::Mat edges = square_outline();
     const cv::Point2f end = RayCaster::walk(edges, {79.0F, 50.0F}, {79.6F, 50.0F});
     EXPECT_EQ(edges.at<std::uint8_t>(cvRound(end.y), cvRound(end.x)), 0) << end;

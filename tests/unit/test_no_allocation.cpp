@@ -123,10 +123,6 @@ TEST(NoAllocation, EstimateAfterTheFirstCallOnTheSameSize) {
 }
 
 TEST(NoAllocation, TrackerProcessInSteadyState) {
-    GTEST_SKIP() << "BUG: Tracker::process allocates 36 times a frame in steady state (tracker.hpp "
-                    "promises none): both cv::Sobel calls in Preprocessor::compute_edges "
-                    "(core/src/preprocess.cpp) build their kernels and filter engine on every "
-                    "call. Fix: a hand-written 3x3 Sobel fused with the magnitude loop.";
     // 40 frames of a disk moving on 640x480 BGR, built beforehand; 20 to warm up (the tracker
     // is tracking by then), 20 counted.
     constexpr int frames = 40;

@@ -39,7 +39,8 @@ public:
     const cv::Mat& difference() const noexcept { return difference_; }   // CV_8U compensated
     bool has_previous() const noexcept { return processed_ >= 2; }
     // Sum of the compensated difference over the working pixels (paper 4.1 "global inter-frame
-    // movement value"; the paper's average times the pixel count, see docs/settings.md).
+    // movement value"; the paper's average times the pixel count, see docs/settings.md), from
+    // the grey difference or the per-channel one (PreprocessSettings::movement_source).
     double movement() const noexcept { return movement_; }
     int brightness_offset_applied() const noexcept { return offset_; }
 
@@ -50,6 +51,7 @@ private:
     void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
     void compute_edges() noexcept;
     void compute_difference() noexcept;
+    double compensate(cv::Mat& difference) noexcept;
 
     PreprocessSettings settings_;
     int input_width_ = 0;
@@ -65,18 +67,17 @@ private:
     int interior_begin_ = 0;
     int interior_end_ = 0;
     std::vector<const std::uint8_t*> tap_row_pointers_;
-    std::vector<float> squared_;
+    std::vector<int> squared_channels_;  // one row of squared Sobel magnitudes, per channel
     std::vector<int> last_tap_row_;  // per working row, the lowest input row a tap reads  // one row of squared Sobel magnitudes
     std::array<cv::Mat, 2> color_;
     std::array<cv::Mat, 2> gray_;
     int current_ = 0;
     long processed_ = 0;
-    cv::Mat sobel_x_;
-    cv::Mat sobel_y_;
     cv::Mat magnitude_;
     cv::Mat edges_;
     cv::Mat difference_;
     cv::Mat color_difference_;
+    cv::Mat channel_difference_;
     double movement_ = 0.0;
     int offset_ = 0;
 };

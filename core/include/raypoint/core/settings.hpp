@@ -43,9 +43,10 @@ struct PreprocessSettings {
     int edge_threshold = 96;
     EdgeSource edge_source = EdgeSource::max_channel;
     int compensation_minima = 10;  // distinct minima of the difference image (paper 4.1)
-    // The difference image from the grey images (paper 4.1) or the largest per-channel
-    // difference, which sees a skin hand move over a wall of the same brightness.
-    EdgeSource difference_source = EdgeSource::max_channel;
+    // The movement value from the grey difference (paper 4.1) or the largest per-channel
+    // difference, which sees a skin hand move over a wall of the same brightness. The difference
+    // image whose centre of mass picks the target stays the grey one either way.
+    EdgeSource movement_source = EdgeSource::max_channel;
 };
 
 struct EstimatorSettings {
