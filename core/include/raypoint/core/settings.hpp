@@ -39,7 +39,7 @@ struct PreprocessSettings {
     // that the filter always spans the same part of the scene whatever the camera's size.
     double filter_radius = 5.0;
     // Edge pixel when the Sobel magnitude is over this. The paper's 128 leaves a skin hand over a
-    // cluttered room without a closed outline (realworld scene: 47% tracked, 100% at 96).
+    // cluttered room without a closed outline (realworld scenes: 51-93% tracked, 100% at 96).
     int edge_threshold = 96;
     EdgeSource edge_source = EdgeSource::max_channel;
     int compensation_minima = 10;  // distinct minima of the difference image (paper 4.1)
@@ -69,16 +69,15 @@ struct TrackingSettings {
     double startup_seconds = 2.0;  // INITIALIZING: the camera's auto-exposure settles
     // Movement thresholds are sums of the compensated difference image over the paper's
     // 19,200 working pixels (averages of 3 and 0.25); Tracker scales them to the working size.
-    // The paper searches above 57,600. A target entering the frame measured 41,000-53,000 in
-    // the shared jpeg, lowlight and realworld scenes, and a hand sliding in 1,000-5,000 in the
-    // project's own realworld scene: never tracked. 9,600 (average 0.5) starts on all of them
-    // within 0.13 s, while still scenes measure 0-42 and brightness jumps 842.
+    // The paper searches above 57,600, which a target sliding into view (1,000-20,000 a
+    // frame) never reaches. 9,600 (average 0.5) starts on every measured scene within 0.13 s,
+    // while still scenes measure 0-42 and brightness jumps 842 (docs/settings.md).
     double search_threshold = 9600.0;
     double idle_threshold = 4800.0;
     double idle_seconds = 2.0;         // TRACKING fails after this long below idle_threshold
     bool keep_still_target = true;     // a still target stays tracked while its colour validates
     // Fractions of the frame (paper 4.2: 2% and 60%). A sphere moving away in the interfering
-    // scene is 2.0-2.5% of the frame: 1% keeps it (6% tracked at 2%, 98% at 1%).
+    // scene is 2.0-2.5% of the frame: 1% keeps it (60% tracked at 2%, 100% at 1%).
     double min_area = 0.01;
     double max_area = 0.60;
     SearchWeighting search_weighting = SearchWeighting::strong;
