@@ -17,11 +17,16 @@ std::optional<double> parse_number(std::string_view text);
 template <typename Access>
 Key integer_key(std::string_view section, std::string_view name, int min, int max,
                 std::string_view doc, Access access) {
-    Key key{section, name, ValueType::integer, static_cast<double>(min), static_cast<double>(max),
-            {}, doc, nullptr, nullptr};
-    key.format = [access](const Config& c) {
-        return std::to_string(access(c));
-    };
+    Key key{section,
+            name,
+            ValueType::integer,
+            static_cast<double>(min),
+            static_cast<double>(max),
+            {},
+            doc,
+            nullptr,
+            nullptr};
+    key.format = [access](const Config& c) { return std::to_string(access(c)); };
     key.parse = [access, min, max](Config& c, std::string_view text) -> std::optional<std::string> {
         int value = 0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
@@ -52,9 +57,7 @@ template <typename Access>
 Key boolean_key(std::string_view section, std::string_view name, std::string_view doc,
                 Access access) {
     Key key{section, name, ValueType::boolean, 0, 1, {"true", "false"}, doc, nullptr, nullptr};
-    key.format = [access](const Config& c) {
-        return std::string(access(c) ? "true" : "false");
-    };
+    key.format = [access](const Config& c) { return std::string(access(c) ? "true" : "false"); };
     key.parse = [access](Config& c, std::string_view text) -> std::optional<std::string> {
         if (text == "true" || text == "yes" || text == "on" || text == "1") {
             access(c) = true;
@@ -73,7 +76,8 @@ template <typename Enum, typename Access>
 Key choice_key(std::string_view section, std::string_view name, std::string_view doc,
                std::vector<std::pair<Enum, std::string_view>> names, Access access) {
     Key key{section, name, ValueType::choice, 0, 0, {}, doc, nullptr, nullptr};
-    for (const auto& entry : names) key.choices.push_back(entry.second);
+    for (const auto& entry : names)
+        key.choices.push_back(entry.second);
     key.format = [access, names](const Config& c) {
         for (const auto& [value, text] : names) {
             if (value == access(c)) return std::string(text);

@@ -28,7 +28,9 @@ std::optional<double> parse_number(std::string_view text) {
 
 }  // namespace detail
 
-std::string Key::full_name() const { return std::string(section) + "." + std::string(name); }
+std::string Key::full_name() const {
+    return std::string(section) + "." + std::string(name);
+}
 
 std::string Key::allowed() const {
     switch (type) {
@@ -61,7 +63,8 @@ namespace {
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
     std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
     for (std::size_t i = 1; i <= a.size(); ++i) {
         std::size_t diagonal = row[0];
         row[0] = i;
@@ -108,8 +111,7 @@ void apply_assignment(Config& config, std::string_view assignment) {
                           nearest_key(assignment.substr(0, equals)) + "?)");
     }
     if (const auto reason = key->parse(config, value)) {
-        throw ConfigError("--set " + shown + ": " + *reason + " (allowed: " + key->allowed() +
-                          ")");
+        throw ConfigError("--set " + shown + ": " + *reason + " (allowed: " + key->allowed() + ")");
     }
 }
 
@@ -126,7 +128,8 @@ std::vector<std::string> cross_check(const Config& config) {
         problems.push_back("tracking.color_patch must be odd, so the square has a centre");
     }
     const auto& preprocess = config.core.preprocess;
-    if (config.core.estimator.block_size > std::min(preprocess.work_width, preprocess.work_height)) {
+    if (config.core.estimator.block_size >
+        std::min(preprocess.work_width, preprocess.work_height)) {
         problems.push_back("estimator.block_size must fit in the working image");
     }
     return problems;

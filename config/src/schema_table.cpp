@@ -19,17 +19,21 @@ const std::vector<Key>& schema() {
     constexpr double max_movement = 255.0 * 160 * 120;
     static const std::vector<Key> keys{
         // [preprocess] paper 4.1
-        integer_key("preprocess", "work_width", 32, 1920,
-                    "working image width in pixels; the input is filtered and subsampled to it",
-                    [](auto& c) -> auto& { return c.core.preprocess.work_width; }),
-        integer_key("preprocess", "work_height", 24, 1080, "working image height in pixels",
-                    [](auto& c) -> auto& { return c.core.preprocess.work_height; }),
-        real_key("preprocess", "filter_radius", 0.0, 40.0,
-                 "Poisson-disk filter radius in pixels of a 640-wide input (scaled with the input)",
-                 [](auto& c) -> auto& { return c.core.preprocess.filter_radius; }),
-        integer_key("preprocess", "edge_threshold", 1, 254,
-                    "a working pixel is an edge when its Sobel magnitude is over this",
-                    [](auto& c) -> auto& { return c.core.preprocess.edge_threshold; }),
+        integer_key(
+            "preprocess", "work_width", 32, 1920,
+            "working image width in pixels; the input is filtered and subsampled to it",
+            [](auto& c) -> auto& { return c.core.preprocess.work_width; }),
+        integer_key(
+            "preprocess", "work_height", 24, 1080, "working image height in pixels",
+            [](auto& c) -> auto& { return c.core.preprocess.work_height; }),
+        real_key(
+            "preprocess", "filter_radius", 0.0, 40.0,
+            "Poisson-disk filter radius in pixels of a 640-wide input (scaled with the input)",
+            [](auto& c) -> auto& { return c.core.preprocess.filter_radius; }),
+        integer_key(
+            "preprocess", "edge_threshold", 1, 254,
+            "a working pixel is an edge when its Sobel magnitude is over this",
+            [](auto& c) -> auto& { return c.core.preprocess.edge_threshold; }),
         choice_key<EdgeSource>(
             "preprocess", "edge_source",
             "Sobel on the grey image (paper) or the strongest colour channel's",
@@ -40,9 +44,10 @@ const std::vector<Key>& schema() {
             "movement value from the grey difference (paper) or the largest channel difference",
             {{EdgeSource::luma, "luma"}, {EdgeSource::max_channel, "max-channel"}},
             [](auto& c) -> auto& { return c.core.preprocess.movement_source; }),
-        integer_key("preprocess", "compensation_minima", 1, 255,
-                    "distinct minima of the difference image whose largest is the brightness change",
-                    [](auto& c) -> auto& { return c.core.preprocess.compensation_minima; }),
+        integer_key(
+            "preprocess", "compensation_minima", 1, 255,
+            "distinct minima of the difference image whose largest is the brightness change",
+            [](auto& c) -> auto& { return c.core.preprocess.compensation_minima; }),
         // [estimator] paper 3
         choice_key<EstimatorKind>(
             "estimator", "method", "object projection feature estimator (paper 3.1-3.4)",
@@ -51,83 +56,105 @@ const std::vector<Key>& schema() {
              {EstimatorKind::iterative_ny_ray, "iterative-ny-ray"},
              {EstimatorKind::raster, "raster"}},
             [](auto& c) -> auto& { return c.core.estimator.kind; }),
-        integer_key("estimator", "rays", 3, 256, "n: rays cast from each origin",
-                    [](auto& c) -> auto& { return c.core.estimator.rays; }),
-        integer_key("estimator", "recasts", 1, 3,
-                    "y: levels of casting, n^y rays in the last (iterative-ny-ray and raster)",
-                    [](auto& c) -> auto& { return c.core.estimator.recasts; }),
-        integer_key("estimator", "block_size", 1, 64, "m: raster block side in working pixels",
-                    [](auto& c) -> auto& { return c.core.estimator.block_size; }),
-        integer_key("estimator", "max_iterations", 1, 100, "iterations at most per estimate",
-                    [](auto& c) -> auto& { return c.core.estimator.max_iterations; }),
-        real_key("estimator", "tolerance", 0.01, 10.0,
-                 "iteration stops when centroid and inner point move less (working pixels)",
-                 [](auto& c) -> auto& { return c.core.estimator.tolerance; }),
+        integer_key(
+            "estimator", "rays", 3, 256, "n: rays cast from each origin",
+            [](auto& c) -> auto& { return c.core.estimator.rays; }),
+        integer_key(
+            "estimator", "recasts", 1, 3,
+            "y: levels of casting, n^y rays in the last (iterative-ny-ray and raster)",
+            [](auto& c) -> auto& { return c.core.estimator.recasts; }),
+        integer_key(
+            "estimator", "block_size", 1, 64, "m: raster block side in working pixels",
+            [](auto& c) -> auto& { return c.core.estimator.block_size; }),
+        integer_key(
+            "estimator", "max_iterations", 1, 100, "iterations at most per estimate",
+            [](auto& c) -> auto& { return c.core.estimator.max_iterations; }),
+        real_key(
+            "estimator", "tolerance", 0.01, 10.0,
+            "iteration stops when centroid and inner point move less (working pixels)",
+            [](auto& c) -> auto& { return c.core.estimator.tolerance; }),
         choice_key<AreaMode>(
             "estimator", "area_mode",
             "raster area and centroid: whole blocks (paper) or refined to the outline",
             {{AreaMode::blocks, "blocks"}, {AreaMode::refined, "refined"}},
             [](auto& c) -> auto& { return c.core.estimator.area_mode; }),
-        integer_key("estimator", "edge_escape", 0, 16,
-                    "an inner point on an edge first moves to a non-edge pixel this close (0: off)",
-                    [](auto& c) -> auto& { return c.core.estimator.edge_escape; }),
-        real_key("estimator", "fill_limit", 1.0, 100.0,
-                 "refined: a fill this many times the blocks' area has leaked and is redone",
-                 [](auto& c) -> auto& { return c.core.estimator.fill_limit; }),
+        integer_key(
+            "estimator", "edge_escape", 0, 16,
+            "an inner point on an edge first moves to a non-edge pixel this close (0: off)",
+            [](auto& c) -> auto& { return c.core.estimator.edge_escape; }),
+        real_key(
+            "estimator", "fill_limit", 1.0, 100.0,
+            "refined: a fill this many times the blocks' area has leaked and is redone",
+            [](auto& c) -> auto& { return c.core.estimator.fill_limit; }),
         // [tracking] paper 4.2
-        real_key("tracking", "startup_seconds", 0.0, 30.0,
-                 "INITIALIZING: seconds of frame time before searching starts",
-                 [](auto& c) -> auto& { return c.core.tracking.startup_seconds; }),
-        real_key("tracking", "search_threshold", 0.0, max_movement,
-                 "movement sum over 160x120 pixels that starts tracking (scaled to work size)",
-                 [](auto& c) -> auto& { return c.core.tracking.search_threshold; }),
-        real_key("tracking", "idle_threshold", 0.0, max_movement,
-                 "movement sum over 160x120 pixels below which the scene counts as still",
-                 [](auto& c) -> auto& { return c.core.tracking.idle_threshold; }),
-        real_key("tracking", "idle_seconds", 0.0, 600.0,
-                 "seconds of stillness after which the target is dropped (or colour-checked)",
-                 [](auto& c) -> auto& { return c.core.tracking.idle_seconds; }),
-        boolean_key("tracking", "keep_still_target",
-                    "keep a still target while it keeps the colour it had when it last moved",
-                    [](auto& c) -> auto& { return c.core.tracking.keep_still_target; }),
-        real_key("tracking", "min_area", 0.0, 1.0, "smallest target area, fraction of the frame",
-                 [](auto& c) -> auto& { return c.core.tracking.min_area; }),
-        real_key("tracking", "max_area", 0.0, 1.0, "largest target area, fraction of the frame",
-                 [](auto& c) -> auto& { return c.core.tracking.max_area; }),
+        real_key(
+            "tracking", "startup_seconds", 0.0, 30.0,
+            "INITIALIZING: seconds of frame time before searching starts",
+            [](auto& c) -> auto& { return c.core.tracking.startup_seconds; }),
+        real_key(
+            "tracking", "search_threshold", 0.0, max_movement,
+            "movement sum over 160x120 pixels that starts tracking (scaled to work size)",
+            [](auto& c) -> auto& { return c.core.tracking.search_threshold; }),
+        real_key(
+            "tracking", "idle_threshold", 0.0, max_movement,
+            "movement sum over 160x120 pixels below which the scene counts as still",
+            [](auto& c) -> auto& { return c.core.tracking.idle_threshold; }),
+        real_key(
+            "tracking", "idle_seconds", 0.0, 600.0,
+            "seconds of stillness after which the target is dropped (or colour-checked)",
+            [](auto& c) -> auto& { return c.core.tracking.idle_seconds; }),
+        boolean_key(
+            "tracking", "keep_still_target",
+            "keep a still target while it keeps the colour it had when it last moved",
+            [](auto& c) -> auto& { return c.core.tracking.keep_still_target; }),
+        real_key(
+            "tracking", "min_area", 0.0, 1.0, "smallest target area, fraction of the frame",
+            [](auto& c) -> auto& { return c.core.tracking.min_area; }),
+        real_key(
+            "tracking", "max_area", 0.0, 1.0, "largest target area, fraction of the frame",
+            [](auto& c) -> auto& { return c.core.tracking.max_area; }),
         choice_key<SearchWeighting>(
             "tracking", "search_weighting",
             "centre of mass of every difference pixel (paper) or of the strong ones only",
             {{SearchWeighting::all, "all"}, {SearchWeighting::strong, "strong"}},
             [](auto& c) -> auto& { return c.core.tracking.search_weighting; }),
-        real_key("tracking", "strong_fraction", 0.0, 1.0,
-                 "strong weighting: pixels at or above this share of the largest difference",
-                 [](auto& c) -> auto& { return c.core.tracking.strong_fraction; }),
-        integer_key("tracking", "color_patch", 1, 15,
-                    "side of the colour-match square in working pixels",
-                    [](auto& c) -> auto& { return c.core.tracking.color_patch; }),
-        integer_key("tracking", "color_tolerance", 0, 765,
-                    "colours match when the sum of channel differences is at most this",
-                    [](auto& c) -> auto& { return c.core.tracking.color_tolerance; }),
-        integer_key("tracking", "recovery_near", 1, 200, "near recovery offset, working pixels",
-                    [](auto& c) -> auto& { return c.core.tracking.recovery_near; }),
-        integer_key("tracking", "recovery_far", 1, 200, "far recovery offset, working pixels",
-                    [](auto& c) -> auto& { return c.core.tracking.recovery_far; }),
+        real_key(
+            "tracking", "strong_fraction", 0.0, 1.0,
+            "strong weighting: pixels at or above this share of the largest difference",
+            [](auto& c) -> auto& { return c.core.tracking.strong_fraction; }),
+        integer_key(
+            "tracking", "color_patch", 1, 15, "side of the colour-match square in working pixels",
+            [](auto& c) -> auto& { return c.core.tracking.color_patch; }),
+        integer_key(
+            "tracking", "color_tolerance", 0, 765,
+            "colours match when the sum of channel differences is at most this",
+            [](auto& c) -> auto& { return c.core.tracking.color_tolerance; }),
+        integer_key(
+            "tracking", "recovery_near", 1, 200, "near recovery offset, working pixels",
+            [](auto& c) -> auto& { return c.core.tracking.recovery_near; }),
+        integer_key(
+            "tracking", "recovery_far", 1, 200, "far recovery offset, working pixels",
+            [](auto& c) -> auto& { return c.core.tracking.recovery_far; }),
         // [output] paper 4.3
         choice_key<SmoothingKind>(
             "output", "smoothing", "position smoothing: exponential once a frame, or One Euro",
             {{SmoothingKind::ema, "ema"}, {SmoothingKind::one_euro, "one-euro"}},
             [](auto& c) -> auto& { return c.core.output.smoothing; }),
-        real_key("output", "ema_weight", 0.0, 0.999, "ema: weight of the previous position",
-                 [](auto& c) -> auto& { return c.core.output.ema_weight; }),
-        real_key("output", "one_euro_min_cutoff", 0.001, 100.0,
-                 "one-euro: cutoff at rest in Hz (lower: steadier)",
-                 [](auto& c) -> auto& { return c.core.output.one_euro_min_cutoff; }),
-        real_key("output", "one_euro_beta", 0.0, 1000.0,
-                 "one-euro: cutoff increase with speed (higher: less lag)",
-                 [](auto& c) -> auto& { return c.core.output.one_euro_beta; }),
-        real_key("output", "one_euro_d_cutoff", 0.001, 100.0,
-                 "one-euro: cutoff of the speed estimate in Hz",
-                 [](auto& c) -> auto& { return c.core.output.one_euro_d_cutoff; }),
+        real_key(
+            "output", "ema_weight", 0.0, 0.999, "ema: weight of the previous position",
+            [](auto& c) -> auto& { return c.core.output.ema_weight; }),
+        real_key(
+            "output", "one_euro_min_cutoff", 0.001, 100.0,
+            "one-euro: cutoff at rest in Hz (lower: steadier)",
+            [](auto& c) -> auto& { return c.core.output.one_euro_min_cutoff; }),
+        real_key(
+            "output", "one_euro_beta", 0.0, 1000.0,
+            "one-euro: cutoff increase with speed (higher: less lag)",
+            [](auto& c) -> auto& { return c.core.output.one_euro_beta; }),
+        real_key(
+            "output", "one_euro_d_cutoff", 0.001, 100.0,
+            "one-euro: cutoff of the speed estimate in Hz",
+            [](auto& c) -> auto& { return c.core.output.one_euro_d_cutoff; }),
     };
     return keys;
 }

@@ -75,12 +75,16 @@ void run_tracker(benchmark::State& state, PixelFormat format) {
         benchmark::DoNotOptimize(result);
         ++index;
     }
-    state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()),
-                                               benchmark::Counter::kIsRate);
+    state.counters["fps"] =
+        benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
-void BM_TrackerBgr(benchmark::State& state) { run_tracker(state, PixelFormat::bgr); }
-void BM_TrackerYuyv(benchmark::State& state) { run_tracker(state, PixelFormat::yuyv); }
+void BM_TrackerBgr(benchmark::State& state) {
+    run_tracker(state, PixelFormat::bgr);
+}
+void BM_TrackerYuyv(benchmark::State& state) {
+    run_tracker(state, PixelFormat::yuyv);
+}
 
 void BM_Preprocess(benchmark::State& state) {
     const cv::Size size(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));

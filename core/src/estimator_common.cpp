@@ -16,7 +16,8 @@ cv::Point2f mean_point(const std::vector<RayHit>& hits) noexcept {
 
 double fan_area(const RayHit* hits, int rays) noexcept {
     double sum = 0.0;
-    for (int k = 0; k < rays; ++k) sum += static_cast<double>(hits[k].length) * hits[k].length;
+    for (int k = 0; k < rays; ++k)
+        sum += static_cast<double>(hits[k].length) * hits[k].length;
     return 0.5 * sum * (2.0 * M_PI / rays);
 }
 
@@ -24,7 +25,8 @@ double mean_fan_area(const std::vector<RayHit>& hits, int rays) noexcept {
     const std::size_t origins = hits.size() / static_cast<std::size_t>(rays);
     if (origins == 0) return 0.0;
     double sum = 0.0;
-    for (std::size_t o = 0; o < origins; ++o) sum += fan_area(&hits[o * rays], rays);
+    for (std::size_t o = 0; o < origins; ++o)
+        sum += fan_area(&hits[o * rays], rays);
     return sum / static_cast<double>(origins);
 }
 

@@ -36,7 +36,8 @@ void cast_levels(const RayCaster& caster, const cv::Mat& edges, cv::Point2f orig
     last.clear();
     caster.cast(edges, origin, last, visit);
     if (rays != nullptr) {
-        for (const auto& hit : last) rays->push_back({origin, hit.point});
+        for (const auto& hit : last)
+            rays->push_back({origin, hit.point});
     }
     for (int level = 1; level < levels; ++level) {
         scratch.swap(last);

@@ -7,7 +7,7 @@
 namespace raypoint::core::detail {
 
 class ImageEvidence final : public FrameEvidence {
-public:
+  public:
     ImageEvidence(const Preprocessor& images, Estimator& estimator,
                   const TrackingSettings& settings) noexcept
         : images_(images), estimator_(estimator), settings_(settings) {}
@@ -24,7 +24,7 @@ public:
         return patch_mean(images_.previous_color(), at);
     }
 
-private:
+  private:
     cv::Vec3f patch_mean(const cv::Mat& color, cv::Point2f at) const noexcept;
 
     const Preprocessor& images_;

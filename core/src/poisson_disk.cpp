@@ -9,7 +9,7 @@ namespace {
 // A tiny fixed generator so the tap set is the same on every platform and standard library
 // (std::uniform_real_distribution is implementation-defined).
 class SplitMix {
-public:
+  public:
     double next_unit() noexcept {
         state_ += 0x9E3779B97F4A7C15ULL;
         std::uint64_t z = state_;
@@ -19,7 +19,7 @@ public:
         return static_cast<double>(z >> 11) * 0x1.0p-53;
     }
 
-private:
+  private:
     std::uint64_t state_ = 5;  // radius 5: any fixed seed would do
 };
 

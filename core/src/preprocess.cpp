@@ -42,11 +42,13 @@ int brightness_offset(const cv::Mat& difference, int minima) noexcept {
             ++partial[2][row[x + 2]];
             ++partial[3][row[x + 3]];
         }
-        for (; x < difference.cols; ++x) ++partial[0][row[x]];
+        for (; x < difference.cols; ++x)
+            ++partial[0][row[x]];
     }
     std::array<int, 256> histogram{};
     for (int value = 0; value < 256; ++value) {
-        histogram[value] = partial[0][value] + partial[1][value] + partial[2][value] + partial[3][value];
+        histogram[value] =
+            partial[0][value] + partial[1][value] + partial[2][value] + partial[3][value];
     }
     int distinct = 0;
     int largest = 0;
@@ -164,8 +166,8 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
     cv::Mat& out = color_[current_];
     for (int y = 0; y < settings_.work_height; ++y) {
         for (unsigned t = 0; t < tap_count; ++t) {
-            tap_row_pointers_[t] = frame.data +
-                                   static_cast<std::ptrdiff_t>(tap_rows_[t][y]) * frame.stride;
+            tap_row_pointers_[t] =
+                frame.data + static_cast<std::ptrdiff_t>(tap_rows_[t][y]) * frame.stride;
         }
         prefetch_rows(frame, y + 1);
         auto* target = out.ptr<std::uint8_t>(y);
@@ -185,12 +187,14 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
             store(x, b, g, r);
         };
         int x = 0;
-        for (; x < interior_begin_; ++x) clamped(x);
+        for (; x < interior_begin_; ++x)
+            clamped(x);
 #if defined(__SSE2__)
         // Four working pixels a step: each tap's B, G, R (and the next pixel's B, ignored) are
         // one 32-bit load widened to 16-bit lanes; 16 taps x 255 fit in 16 bits. The interior
         // has a column to spare on the right, so the 4th byte is inside the frame.
-        for (unsigned t = 0; t < tap_count; ++t) tap_row_pointers_[t] += tap_dx_[t] * 3;
+        for (unsigned t = 0; t < tap_count; ++t)
+            tap_row_pointers_[t] += tap_dx_[t] * 3;
         const __m128i zero = _mm_setzero_si128();
         for (; x + 4 <= interior_end_; x += 4) {
             const int c0 = centre_columns_[x] * 3;
@@ -214,9 +218,11 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
             alignas(16) std::uint16_t lanes[16];
             _mm_store_si128(reinterpret_cast<__m128i*>(lanes), low);
             _mm_store_si128(reinterpret_cast<__m128i*>(lanes + 8), high);
-            for (int k = 0; k < 4; ++k) store(x + k, lanes[4 * k], lanes[4 * k + 1], lanes[4 * k + 2]);
+            for (int k = 0; k < 4; ++k)
+                store(x + k, lanes[4 * k], lanes[4 * k + 1], lanes[4 * k + 2]);
         }
-        for (unsigned t = 0; t < tap_count; ++t) tap_row_pointers_[t] -= tap_dx_[t] * 3;
+        for (unsigned t = 0; t < tap_count; ++t)
+            tap_row_pointers_[t] -= tap_dx_[t] * 3;
 #endif
         for (; x < interior_end_; ++x) {
             const int centre = centre_columns_[x];
@@ -262,8 +268,8 @@ void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
     cv::Mat& out = color_[current_];
     for (int y = 0; y < settings_.work_height; ++y) {
         for (unsigned t = 0; t < tap_count; ++t) {
-            tap_row_pointers_[t] = frame.data +
-                                   static_cast<std::ptrdiff_t>(tap_rows_[t][y]) * frame.stride;
+            tap_row_pointers_[t] =
+                frame.data + static_cast<std::ptrdiff_t>(tap_rows_[t][y]) * frame.stride;
         }
         prefetch_rows(frame, y + 1);
         auto* target = out.ptr<std::uint8_t>(y);

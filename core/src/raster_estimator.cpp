@@ -6,8 +6,7 @@
 
 namespace raypoint::core::detail {
 
-RasterEstimator::RasterEstimator(const EstimatorSettings& settings)
-    : RayEstimatorBase(settings) {}
+RasterEstimator::RasterEstimator(const EstimatorSettings& settings) : RayEstimatorBase(settings) {}
 
 void RasterEstimator::resize(const cv::Mat& edges) {
     width_ = edges.cols;
@@ -18,8 +17,10 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     trace_.blocks_high = (height_ + m - 1) / m;
     block_of_column_.resize(static_cast<std::size_t>(width_));
     block_of_row_.resize(static_cast<std::size_t>(height_));
-    for (int x = 0; x < width_; ++x) block_of_column_[x] = x / m;
-    for (int y = 0; y < height_; ++y) block_of_row_[y] = y / m;
+    for (int x = 0; x < width_; ++x)
+        block_of_column_[x] = x / m;
+    for (int y = 0; y < height_; ++y)
+        block_of_row_[y] = y / m;
     const auto pixels = static_cast<std::size_t>(width_) * height_;
     trace_.blocks.assign(static_cast<std::size_t>(trace_.blocks_wide) * trace_.blocks_high, 0);
     selected_.reserve(trace_.blocks.size());
@@ -78,7 +79,8 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
         }
     }
     // Blocks are never unselected within a frame (paper 3.4), so the centroid converges.
-    for (const int block : selected_) trace_.blocks[block] = 0;
+    for (const int block : selected_)
+        trace_.blocks[block] = 0;
     selected_.clear();
     std::fill(ray_pixels_.begin(), ray_pixels_.end(), 0);
     const auto visit = [this](int x, int y) { select(x, y); };
@@ -93,7 +95,8 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
         const cv::Point2f walked = RayCaster::walk(edges, inner, result.centroid);
         relocation_.clear();
         caster_.cast(edges, walked, relocation_, visit);
-        for (const auto& hit : relocation_) trace_.rays.push_back({walked, hit.point});
+        for (const auto& hit : relocation_)
+            trace_.rays.push_back({walked, hit.point});
         const cv::Point2f moved = RayCaster::walk(edges, walked, mean_point(relocation_));
         result.iterations = i + 1;
         const bool settled = distance(moved, inner) < settings_.tolerance &&

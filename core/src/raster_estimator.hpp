@@ -8,11 +8,11 @@ namespace raypoint::core::detail {
 
 // Paper 3.4: iterative n^y-ray casting with m-rasterization.
 class RasterEstimator final : public RayEstimatorBase {
-public:
+  public:
     explicit RasterEstimator(const EstimatorSettings& settings);
     Estimate estimate(const cv::Mat& edges, cv::Point2f inner) noexcept override;
 
-private:
+  private:
     void resize(const cv::Mat& edges);
     void select(int x, int y) noexcept;
     cv::Point2f block_centroid() const noexcept;

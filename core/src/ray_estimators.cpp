@@ -1,7 +1,7 @@
 // The three estimators without rasterization (paper 3.1, 3.2, 3.3).
 
-#include "estimator_common.hpp"
 #include "ray_estimators.hpp"
+#include "estimator_common.hpp"
 
 namespace raypoint::core::detail {
 namespace {
@@ -14,7 +14,8 @@ RayEstimatorBase::RayEstimatorBase(const EstimatorSettings& settings)
     : settings_(settings), caster_(settings.rays) {
     const auto rays = static_cast<std::size_t>(settings.rays);
     std::size_t last_level = 1;
-    for (int level = 0; level < settings.recasts; ++level) last_level *= rays;
+    for (int level = 0; level < settings.recasts; ++level)
+        last_level *= rays;
     hits_.reserve(last_level);
     scratch_.reserve(last_level);
     relocation_.reserve(rays);
@@ -26,7 +27,8 @@ RayEstimatorBase::RayEstimatorBase(const EstimatorSettings& settings)
 cv::Point2f RayEstimatorBase::relocate(const cv::Mat& edges, cv::Point2f inner) noexcept {
     relocation_.clear();
     caster_.cast(edges, inner, relocation_);
-    for (const auto& hit : relocation_) trace_.rays.push_back({inner, hit.point});
+    for (const auto& hit : relocation_)
+        trace_.rays.push_back({inner, hit.point});
     return RayCaster::walk(edges, inner, mean_point(relocation_));
 }
 

@@ -8,11 +8,11 @@
 namespace raypoint::core::detail {
 
 class RayEstimatorBase : public Estimator {
-public:
+  public:
     explicit RayEstimatorBase(const EstimatorSettings& settings);
     const EstimatorTrace& trace() const noexcept override { return trace_; }
 
-protected:
+  protected:
     cv::Point2f relocate(const cv::Mat& edges, cv::Point2f inner) noexcept;
 
     EstimatorSettings settings_;
@@ -24,19 +24,19 @@ protected:
 };
 
 class RayEstimator final : public RayEstimatorBase {
-public:
+  public:
     using RayEstimatorBase::RayEstimatorBase;
     Estimate estimate(const cv::Mat& edges, cv::Point2f inner) noexcept override;
 };
 
 class IterativeRayEstimator final : public RayEstimatorBase {
-public:
+  public:
     using RayEstimatorBase::RayEstimatorBase;
     Estimate estimate(const cv::Mat& edges, cv::Point2f inner) noexcept override;
 };
 
 class IterativeNyRayEstimator final : public RayEstimatorBase {
-public:
+  public:
     using RayEstimatorBase::RayEstimatorBase;
     Estimate estimate(const cv::Mat& edges, cv::Point2f inner) noexcept override;
 };

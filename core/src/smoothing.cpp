@@ -13,7 +13,8 @@ double alpha(double hz, double seconds) noexcept {
 
 }  // namespace
 
-OneEuroFilter::OneEuroFilter(double min_cutoff_hz, double beta, double derivative_cutoff_hz) noexcept
+OneEuroFilter::OneEuroFilter(double min_cutoff_hz, double beta,
+                             double derivative_cutoff_hz) noexcept
     : min_cutoff_(min_cutoff_hz), beta_(beta), derivative_cutoff_(derivative_cutoff_hz) {}
 
 void OneEuroFilter::reset(double value, Timestamp timestamp) noexcept {

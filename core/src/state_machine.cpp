@@ -166,9 +166,11 @@ bool StateMachine::on_recovering() noexcept {
     float best_distance = tolerance;
     for (const int offset : {settings_.recovery_near, settings_.recovery_far}) {
         for (const auto& d : directions) {
-            const cv::Point2f point = candidate_.inner + cv::Point2f(static_cast<float>(d[0] * offset),
-                                                                     static_cast<float>(d[1] * offset));
-            if (point.x < 0 || point.y < 0 || point.x > static_cast<float>(working_size_.width - 1) ||
+            const cv::Point2f point =
+                candidate_.inner +
+                cv::Point2f(static_cast<float>(d[0] * offset), static_cast<float>(d[1] * offset));
+            if (point.x < 0 || point.y < 0 ||
+                point.x > static_cast<float>(working_size_.width - 1) ||
                 point.y > static_cast<float>(working_size_.height - 1)) {
                 continue;
             }

@@ -32,7 +32,9 @@ struct Tracker::Impl {
 Tracker::Tracker(const Settings& settings) : impl_(std::make_unique<Impl>(settings)) {}
 Tracker::~Tracker() = default;
 
-const Settings& Tracker::settings() const noexcept { return impl_->settings; }
+const Settings& Tracker::settings() const noexcept {
+    return impl_->settings;
+}
 
 TrackerImages Tracker::images() const noexcept {
     return {impl_->preprocessor.color(), impl_->preprocessor.magnitude(),

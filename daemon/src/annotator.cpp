@@ -57,8 +57,8 @@ void annotate(cv::Mat& frame, const core::Tracker& tracker, const core::FrameRes
     if (result.recovered) label += "  recovered";
     cv::putText(frame, label, {10, 28}, cv::FONT_HERSHEY_SIMPLEX, 0.8, cv::Scalar(0, 0, 0), 4,
                 cv::LINE_AA);
-    cv::putText(frame, label, {10, 28}, cv::FONT_HERSHEY_SIMPLEX, 0.8, cv::Scalar(255, 255, 255),
-                2, cv::LINE_AA);
+    cv::putText(frame, label, {10, 28}, cv::FONT_HERSHEY_SIMPLEX, 0.8, cv::Scalar(255, 255, 255), 2,
+                cv::LINE_AA);
 }
 
 }  // namespace raypoint::daemon

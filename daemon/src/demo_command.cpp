@@ -59,21 +59,20 @@ int demo_command(std::span<const std::string_view> args) {
     long total_us = 0;
     for (int index = 0; index < renderer.frame_count(); ++index) {
         scene::RenderedFrame frame = renderer.render(index);
-        const core::FrameView view{frame.bgr.data,
-                                   frame.bgr.cols,
-                                   frame.bgr.rows,
-                                   static_cast<int>(frame.bgr.step),
-                                   core::PixelFormat::bgr,
-                                   core::seconds_to_us(renderer.frame_time(index))};
+        const core::FrameView view{
+            frame.bgr.data,         frame.bgr.cols,
+            frame.bgr.rows,         static_cast<int>(frame.bgr.step),
+            core::PixelFormat::bgr, core::seconds_to_us(renderer.frame_time(index))};
         const auto start = std::chrono::steady_clock::now();
         const core::FrameResult result = tracker.process(view);
         total_us += static_cast<long>(std::chrono::duration_cast<std::chrono::microseconds>(
                                           std::chrono::steady_clock::now() - start)
                                           .count());
         evaluator.add(frame.truth, frame.mask, result);
-        std::string truth = frame.truth.present ? std::to_string(frame.truth.cx).substr(0, 6) + " " +
-                                                      std::to_string(frame.truth.cy).substr(0, 6)
-                                                : "absent";
+        std::string truth = frame.truth.present
+                                ? std::to_string(frame.truth.cx).substr(0, 6) + " " +
+                                      std::to_string(frame.truth.cy).substr(0, 6)
+                                : "absent";
         if (result.has_position) {
             std::printf("  %6.2f  %-12s  %8.4f %8.4f %+8.4f   %s\n", frame.truth.t,
                         std::string(core::to_string(result.state)).c_str(), result.position.x,
@@ -91,7 +90,8 @@ int demo_command(std::span<const std::string_view> args) {
         "# on target in %.1f%% of %d moving frames; median centroid error %s px at 160x120; "
         "median area error %s; z vs 1/depth r = %s; detected %s s after the target first "
         "moved; core %.0f us a frame\n",
-        100.0 * e.tracked(), e.scored_frames, optional_number(e.median_centroid_error, "%.2f").c_str(),
+        100.0 * e.tracked(), e.scored_frames,
+        optional_number(e.median_centroid_error, "%.2f").c_str(),
         optional_number(e.median_area_error, "%.3f").c_str(),
         optional_number(e.depth_correlation, "%.3f").c_str(),
         optional_number(e.detection_delay, "%.2f").c_str(),

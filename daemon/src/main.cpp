@@ -6,12 +6,12 @@
 #include <string_view>
 #include <vector>
 
+#include "compare_command.hpp"
+#include "demo_command.hpp"
 #include "errors.hpp"
 #include "raypoint/config/schema.hpp"
-#include "track_command.hpp"
-#include "demo_command.hpp"
-#include "compare_command.hpp"
 #include "settings_options.hpp"
+#include "track_command.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 namespace raypoint::daemon {
 
 class ProgressBar {
-public:
+  public:
     explicit ProgressBar(int total_frames);
     ~ProgressBar();
     ProgressBar(const ProgressBar&) = delete;
@@ -14,7 +14,7 @@ public:
 
     void update(int frames_done);
 
-private:
+  private:
     void draw(int frames_done);
 
     bool enabled_;

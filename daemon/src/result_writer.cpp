@@ -32,12 +32,12 @@ void ResultWriter::write(const core::FrameResult& r, long microseconds) {
                 return "[" + number(p.x) + "," + number(p.y) + "]";
             };
             line = "{\"frame\":" + std::to_string(r.frame) + ",\"t\":" + number(seconds) +
-                   ",\"state\":\"" + state + "\",\"centroid\":" +
-                   (r.has_target ? pair(r.centroid) : "null") + ",\"area\":" +
-                   (r.has_target && r.area ? number(*r.area) : "null") + ",\"inner\":" +
-                   (r.has_target ? pair(r.inner) : "null") + ",\"position\":" +
-                   (r.has_position ? "[" + number(r.position.x) + "," + number(r.position.y) +
-                                         "," + number(r.position.z) + "]"
+                   ",\"state\":\"" + state +
+                   "\",\"centroid\":" + (r.has_target ? pair(r.centroid) : "null") +
+                   ",\"area\":" + (r.has_target && r.area ? number(*r.area) : "null") +
+                   ",\"inner\":" + (r.has_target ? pair(r.inner) : "null") + ",\"position\":" +
+                   (r.has_position ? "[" + number(r.position.x) + "," + number(r.position.y) + "," +
+                                         number(r.position.z) + "]"
                                    : "null") +
                    ",\"movement\":" + std::to_string(movement) +
                    ",\"us\":" + std::to_string(microseconds) + "}\n";

@@ -10,12 +10,12 @@ namespace raypoint::daemon {
 enum class OutputFormat { jsonl, csv };
 
 class ResultWriter {
-public:
+  public:
     ResultWriter(std::FILE* out, OutputFormat format);
     // `microseconds`: time the core spent on the frame, decode excluded.
     void write(const core::FrameResult& result, long microseconds);
 
-private:
+  private:
     std::FILE* out_;
     OutputFormat format_;
 };

@@ -49,7 +49,8 @@ TrackOptions parse_track_options(std::span<const std::string_view> args) {
             const std::string value(option_value(args, i));
             char* end = nullptr;
             options.fps = std::strtod(value.c_str(), &end);
-            if (end == value.c_str() || *end != '\0' || !(options.fps > 0.0 && options.fps <= 1000.0)) {
+            if (end == value.c_str() || *end != '\0' ||
+                !(options.fps > 0.0 && options.fps <= 1000.0)) {
                 throw UsageError("--fps " + value + ": not a frame rate (allowed: 0..1000)");
             }
         } else if (arg.starts_with("-") && arg.size() > 1) {
@@ -78,8 +79,8 @@ int track_command(std::span<const std::string_view> args) {
     ProgressBar progress(source.frame_count());
     int frames = 0;
     while (auto frame = source.next()) {
-        const core::FrameView view{frame->bgr.data,   frame->bgr.cols,
-                                   frame->bgr.rows,   static_cast<int>(frame->bgr.step),
+        const core::FrameView view{frame->bgr.data,        frame->bgr.cols,
+                                   frame->bgr.rows,        static_cast<int>(frame->bgr.step),
                                    core::PixelFormat::bgr, frame->timestamp};
         const auto start = std::chrono::steady_clock::now();
         const core::FrameResult result = tracker.process(view);
@@ -90,8 +91,9 @@ int track_command(std::span<const std::string_view> args) {
         if (options.verbose && (result.lost || result.recovered)) {
             std::fprintf(stderr, "frame %lld t=%.3f: %s\n", static_cast<long long>(result.frame),
                          static_cast<double>(result.timestamp) * 1e-6,
-                         result.lost ? ("lost: " + std::string(core::to_string(result.loss))).c_str()
-                                     : "recovered");
+                         result.lost
+                             ? ("lost: " + std::string(core::to_string(result.loss))).c_str()
+                             : "recovered");
         }
         if (!options.annotate.empty()) {
             if (!annotated) {

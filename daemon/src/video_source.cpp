@@ -30,8 +30,9 @@ VideoSource::VideoSource(const std::string& path, double fps) : path_(path) {
     }
     const int api = sequence ? cv::CAP_IMAGES : cv::CAP_FFMPEG;
     if (!capture_.open(path, api) || !capture_.isOpened()) {
-        throw InputError(path + (sequence ? ": no image of the sequence could be read"
-                                          : ": cannot decode as video (not a video, or truncated)"));
+        throw InputError(path + (sequence
+                                     ? ": no image of the sequence could be read"
+                                     : ": cannot decode as video (not a video, or truncated)"));
     }
     const double container_fps = capture_.get(cv::CAP_PROP_FPS);
     fixed_rate_ = fps > 0.0 || sequence;

@@ -18,7 +18,7 @@ struct DecodedFrame {
 };
 
 class VideoSource {
-public:
+  public:
     // `path` is a file or a printf-style image sequence ("frames/%04d.png"). `fps` > 0 overrides
     // the container's timestamps with frame / fps. Throws InputError.
     VideoSource(const std::string& path, double fps);
@@ -32,7 +32,7 @@ public:
     cv::Size size() const noexcept { return size_; }
     const std::string& path() const noexcept { return path_; }
 
-private:
+  private:
     std::string path_;
     cv::VideoCapture capture_;
     double fps_ = 30.0;

@@ -36,21 +36,22 @@ Evaluation track_scene(const raypoint::scene::SceneSpec& spec,
         evaluator.add(frame.truth, frame.mask, tracker.process(view));
     }
     const Evaluation e = evaluator.result();
-    std::printf("%-12s tracked %5.1f%% of %d, cerr %s px, area err %s, z r %s, detected after %s s\n",
-                spec.name.c_str(), 100.0 * e.tracked(), e.scored_frames,
-                e.median_centroid_error ? std::to_string(*e.median_centroid_error).c_str() : "-",
-                e.median_area_error ? std::to_string(*e.median_area_error).c_str() : "-",
-                e.depth_correlation ? std::to_string(*e.depth_correlation).c_str() : "-",
-                e.detection_delay ? std::to_string(*e.detection_delay).c_str() : "-");
+    std::printf(
+        "%-12s tracked %5.1f%% of %d, cerr %s px, area err %s, z r %s, detected after %s s\n",
+        spec.name.c_str(), 100.0 * e.tracked(), e.scored_frames,
+        e.median_centroid_error ? std::to_string(*e.median_centroid_error).c_str() : "-",
+        e.median_area_error ? std::to_string(*e.median_area_error).c_str() : "-",
+        e.depth_correlation ? std::to_string(*e.depth_correlation).c_str() : "-",
+        e.detection_delay ? std::to_string(*e.detection_delay).c_str() : "-");
     return e;
 }
 
 struct Expectation {
     const char* preset;
-    double min_tracked;                   // share of moving frames on target
-    double max_centroid_error;            // median, px at 160x120
-    std::optional<double> min_depth_r;    // z against 1/depth
-    double max_detection_delay = 0.5;     // s after the target first moves
+    double min_tracked;                 // share of moving frames on target
+    double max_centroid_error;          // median, px at 160x120
+    std::optional<double> min_depth_r;  // z against 1/depth
+    double max_detection_delay = 0.5;   // s after the target first moves
 };
 
 class Scene : public ::testing::TestWithParam<Expectation> {};
@@ -79,7 +80,7 @@ TEST_P(Scene, MeetsItsThresholds) {
 // pushes, pauses and 15 fps blur have lower r, and no threshold is asserted for them.
 INSTANTIATE_TEST_SUITE_P(
     Presets, Scene,
-    ::testing::Values(Expectation{"ideal", 0.95, 2.0, 0.9},  // the sphere thresholds
+    ::testing::Values(Expectation{"ideal", 0.95, 2.0, 0.9},      // the sphere thresholds
                       Expectation{"nonconvex", 0.95, 4.0, 0.9},  // the hand thresholds
                       Expectation{"lowlight", 0.90, 2.0, 0.7},   // 10 fps, noise, blur
                       Expectation{"interfering", 0.90, 2.0, 0.85},
@@ -87,10 +88,12 @@ INSTANTIATE_TEST_SUITE_P(
                       Expectation{"exposure", 0.90, 2.0, 0.7},  // brightness jumps
                       Expectation{"jpeg", 0.90, 2.0, 0.85},     // JPEG quality 35
                       Expectation{"realworld", 0.85, 4.0, std::nullopt},
-                      Expectation{"fast", 0.90, 4.0, std::nullopt},  // 15 fps, strong blur
+                      Expectation{"fast", 0.90, 4.0, std::nullopt},   // 15 fps, strong blur
                       Expectation{"pause", 0.90, 4.0, std::nullopt},  // holds still 3.5 s
                       Expectation{"push", 0.90, 4.0, std::nullopt}),
-    [](const ::testing::TestParamInfo<Expectation>& param) { return std::string(param.param.preset); });
+    [](const ::testing::TestParamInfo<Expectation>& param) {
+        return std::string(param.param.preset);
+    });
 
 // The paper's system exactly (--preset paper) on the paper's ideal scenario, which the paper
 // tracked "in every frame": it must here too.
@@ -115,10 +118,10 @@ TEST(BrightnessJumps, DoNotStartASearch) {
     int searched = 0;
     for (int index = 0; index < renderer.frame_count(); ++index) {
         const auto frame = renderer.render(index);
-        const auto result = tracker.process({frame.bgr.data, frame.bgr.cols, frame.bgr.rows,
-                                             static_cast<int>(frame.bgr.step),
-                                             raypoint::core::PixelFormat::bgr,
-                                             raypoint::core::seconds_to_us(renderer.frame_time(index))});
+        const auto result =
+            tracker.process({frame.bgr.data, frame.bgr.cols, frame.bgr.rows,
+                             static_cast<int>(frame.bgr.step), raypoint::core::PixelFormat::bgr,
+                             raypoint::core::seconds_to_us(renderer.frame_time(index))});
         if (result.state == raypoint::core::TrackerState::searching) ++searched;
         EXPECT_FALSE(result.has_target) << "frame " << index << " picked a target";
     }

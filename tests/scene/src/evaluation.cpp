@@ -50,8 +50,8 @@ void Evaluator::add(const Truth& truth, const cv::Mat& mask, const core::FrameRe
         first_detection_at_ = truth.t;
     }
     Sample sample;
-    sample.scored = truth.present && truth.moving && entered_at_ &&
-                    truth.t >= *entered_at_ + grace_seconds;
+    sample.scored =
+        truth.present && truth.moving && entered_at_ && truth.t >= *entered_at_ + grace_seconds;
     if (sample.scored && result.has_target) {
         const int pad = static_cast<int>(std::lround(on_target_pad * mask.cols / 160.0));
         sample.on_target = near_mask(mask, result.centroid, pad);

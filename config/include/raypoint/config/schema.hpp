@@ -27,8 +27,8 @@ struct Key {
     // Sets the value from text; returns the reason when the text is not a valid value.
     std::function<std::optional<std::string>(Config&, std::string_view)> parse;
 
-    std::string full_name() const;   // "section.name"
-    std::string allowed() const;     // "16..256", "true|false", "ray|raster"
+    std::string full_name() const;  // "section.name"
+    std::string allowed() const;    // "16..256", "true|false", "ray|raster"
 };
 
 const std::vector<Key>& schema();
@@ -38,7 +38,7 @@ std::string nearest_key(std::string_view wanted);
 
 // A setting that cannot be applied. The message is complete and ready to print.
 class ConfigError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

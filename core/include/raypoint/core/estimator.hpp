@@ -29,15 +29,15 @@ struct RaySegment {
 
 // What an estimator leaves behind besides its Estimate, for annotation.
 struct EstimatorTrace {
-    std::vector<RaySegment> rays;          // the last iteration's rays
-    std::vector<unsigned char> blocks;     // raster only: selected blocks, row-major, 0 or 1
+    std::vector<RaySegment> rays;       // the last iteration's rays
+    std::vector<unsigned char> blocks;  // raster only: selected blocks, row-major, 0 or 1
     int blocks_wide = 0;
     int blocks_high = 0;
     int block_size = 0;
 };
 
 class Estimator {
-public:
+  public:
     virtual ~Estimator() = default;
     // edges: CV_8U, non-zero where there is an edge; the value is the edge strength (the Sobel
     // magnitude), which AreaMode::refined uses to find the outline's ridge. Does not allocate

@@ -23,20 +23,20 @@ const std::vector<cv::Point2f>& poisson_disk_taps();
 int brightness_offset(const cv::Mat& difference, int minima) noexcept;
 
 class Preprocessor {
-public:
+  public:
     explicit Preprocessor(const PreprocessSettings& settings);
 
     // Returns false for a frame the core cannot read (null data, odd YUYV width, stride too
     // small, smaller than the working size): the frame is skipped, nothing changes.
     bool process(const FrameView& frame) noexcept;
 
-    const cv::Mat& color() const noexcept { return color_[current_]; }    // CV_8UC3
+    const cv::Mat& color() const noexcept { return color_[current_]; }  // CV_8UC3
     const cv::Mat& previous_color() const noexcept { return color_[1 - current_]; }
-    const cv::Mat& gray() const noexcept { return gray_[current_]; }      // CV_8U
-    const cv::Mat& magnitude() const noexcept { return magnitude_; }     // CV_8U Sobel magnitude
+    const cv::Mat& gray() const noexcept { return gray_[current_]; }  // CV_8U
+    const cv::Mat& magnitude() const noexcept { return magnitude_; }  // CV_8U Sobel magnitude
     // CV_8U: the magnitude where it is over the edge threshold, 0 elsewhere.
     const cv::Mat& edges() const noexcept { return edges_; }
-    const cv::Mat& difference() const noexcept { return difference_; }   // CV_8U compensated
+    const cv::Mat& difference() const noexcept { return difference_; }  // CV_8U compensated
     bool has_previous() const noexcept { return processed_ >= 2; }
     // Sum of the compensated difference over the working pixels (paper 4.1 "global inter-frame
     // movement value"; the paper's average times the pixel count, see docs/settings.md), from
@@ -44,7 +44,7 @@ public:
     double movement() const noexcept { return movement_; }
     int brightness_offset_applied() const noexcept { return offset_; }
 
-private:
+  private:
     void prepare(const FrameView& frame);
     void filter_bgr(const FrameView& frame) noexcept;
     void filter_yuyv(const FrameView& frame) noexcept;
@@ -68,7 +68,8 @@ private:
     int interior_end_ = 0;
     std::vector<const std::uint8_t*> tap_row_pointers_;
     std::vector<int> squared_channels_;  // one row of squared Sobel magnitudes, per channel
-    std::vector<int> last_tap_row_;  // per working row, the lowest input row a tap reads  // one row of squared Sobel magnitudes
+    std::vector<int> last_tap_row_;  // per working row, the lowest input row a tap reads  // one
+                                     // row of squared Sobel magnitudes
     std::array<cv::Mat, 2> color_;
     std::array<cv::Mat, 2> gray_;
     int current_ = 0;

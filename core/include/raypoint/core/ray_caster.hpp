@@ -15,7 +15,7 @@ struct RayHit {
 };
 
 class RayCaster {
-public:
+  public:
     // n rays at angles 2*pi*k/n, k = 0..n-1 (x right, y down).
     explicit RayCaster(int rays);
 
@@ -40,7 +40,7 @@ public:
     // happens when a detection lands on the moving outline or the target moved onto it.
     static cv::Point2f off_edge(const cv::Mat& edges, cv::Point2f point, int radius) noexcept;
 
-private:
+  private:
     // Unit steps along the major axis: each step enters exactly one new row or column.
     std::vector<cv::Point2f> directions_;
     std::vector<float> step_lengths_;
@@ -69,8 +69,7 @@ void RayCaster::cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHi
             const cv::Point2f next = position + d;
             const int x = cvRound(next.x);
             const int y = cvRound(next.y);
-            if (x < 0 || y < 0 || x >= width || y >= height ||
-                edges.ptr<std::uint8_t>(y)[x] != 0) {
+            if (x < 0 || y < 0 || x >= width || y >= height || edges.ptr<std::uint8_t>(y)[x] != 0) {
                 break;
             }
             visit(x, y);

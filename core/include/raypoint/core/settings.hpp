@@ -51,11 +51,11 @@ struct PreprocessSettings {
 
 struct EstimatorSettings {
     EstimatorKind kind = EstimatorKind::raster;
-    int rays = 16;              // n
-    int recasts = 2;            // y: levels of casting; n^y rays in the last level
-    int block_size = 8;         // m, in working pixels
-    int max_iterations = 10;    // the paper gives no number
-    double tolerance = 0.5;     // working pixels; "negligible adjustment"
+    int rays = 16;            // n
+    int recasts = 2;          // y: levels of casting; n^y rays in the last level
+    int block_size = 8;       // m, in working pixels
+    int max_iterations = 10;  // the paper gives no number
+    double tolerance = 0.5;   // working pixels; "negligible adjustment"
     AreaMode area_mode = AreaMode::refined;
     // An inner point on an edge first moves to the nearest non-edge pixel this close (working
     // pixels). 0 = never, as in the paper: 3 changed no figure on the development clips.
@@ -74,17 +74,17 @@ struct TrackingSettings {
     // while still scenes measure 0-42 and brightness jumps 842 (docs/settings.md).
     double search_threshold = 9600.0;
     double idle_threshold = 4800.0;
-    double idle_seconds = 2.0;         // TRACKING fails after this long below idle_threshold
-    bool keep_still_target = true;     // a still target stays tracked while its colour validates
+    double idle_seconds = 2.0;      // TRACKING fails after this long below idle_threshold
+    bool keep_still_target = true;  // a still target stays tracked while its colour validates
     // Fractions of the frame (paper 4.2: 2% and 60%). A sphere moving away in the interfering
     // scene is 2.0-2.5% of the frame: 1% keeps it (60% tracked at 2%, 100% at 1%).
     double min_area = 0.01;
     double max_area = 0.60;
     SearchWeighting search_weighting = SearchWeighting::strong;
-    double strong_fraction = 0.5;      // for SearchWeighting::strong: share of the maximum
-    int color_patch = 5;               // side of the colour-match square, working pixels
-    int color_tolerance = 90;          // sum of |channel difference| of the patch means
-    int recovery_near = 10;            // recovery offsets, working pixels
+    double strong_fraction = 0.5;  // for SearchWeighting::strong: share of the maximum
+    int color_patch = 5;           // side of the colour-match square, working pixels
+    int color_tolerance = 90;      // sum of |channel difference| of the patch means
+    int recovery_near = 10;        // recovery offsets, working pixels
     int recovery_far = 20;
 };
 
@@ -93,7 +93,7 @@ struct OutputSettings {
     double ema_weight = 0.9;           // weight of the old value
     double one_euro_min_cutoff = 1.0;  // Hz
     double one_euro_beta = 0.5;
-    double one_euro_d_cutoff = 1.0;    // Hz
+    double one_euro_d_cutoff = 1.0;  // Hz
 };
 
 struct Settings {

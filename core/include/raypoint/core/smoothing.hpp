@@ -13,12 +13,12 @@ namespace raypoint::core {
 // One Euro filter for one value on frame time: a low-pass whose cutoff rises with speed, so a
 // still hand is steady and a fast one does not lag.
 class OneEuroFilter {
-public:
+  public:
     OneEuroFilter(double min_cutoff_hz, double beta, double derivative_cutoff_hz) noexcept;
     void reset(double value, Timestamp timestamp) noexcept;
     double update(double value, Timestamp timestamp) noexcept;
 
-private:
+  private:
     double min_cutoff_;
     double beta_;
     double derivative_cutoff_;
@@ -28,13 +28,13 @@ private:
 };
 
 class PositionSmoother {
-public:
+  public:
     explicit PositionSmoother(const OutputSettings& settings) noexcept;
     // Starts over at `position` (a new target: no lag from the previous one).
     void reset(cv::Point3d position, Timestamp timestamp) noexcept;
     cv::Point3d update(cv::Point3d position, Timestamp timestamp) noexcept;
 
-private:
+  private:
     OutputSettings settings_;
     cv::Point3d smoothed_;
     std::array<OneEuroFilter, 3> one_euro_;

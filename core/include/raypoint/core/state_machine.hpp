@@ -16,7 +16,7 @@ namespace raypoint::core {
 
 // What the state machine may ask of the current frame. Points are in working pixels.
 class FrameEvidence {
-public:
+  public:
     virtual ~FrameEvidence() = default;
     // Global inter-frame movement, summed over the working pixels.
     virtual double movement() const noexcept = 0;
@@ -42,7 +42,7 @@ struct StepResult {
 };
 
 class StateMachine {
-public:
+  public:
     StateMachine(const TrackingSettings& settings, cv::Size working_size);
 
     StepResult step(Timestamp timestamp, FrameEvidence& evidence) noexcept;
@@ -51,7 +51,7 @@ public:
     // Sum of |channel difference| of two patch means; colours match at or below the tolerance.
     static float color_distance(cv::Vec3f a, cv::Vec3f b) noexcept;
 
-private:
+  private:
     // Each handler returns true when it has finished the frame; false passes the same frame on
     // to the state it switched to (TRACKING -> VALIDATING -> RECOVERING happen in one frame).
     bool on_initializing() noexcept;
@@ -74,9 +74,9 @@ private:
     TrackerState state_ = TrackerState::initializing;
     std::optional<Timestamp> started_at_;
     std::optional<Timestamp> still_since_;
-    cv::Point2f inner_;            // the inner point after the previous frame
-    Estimate candidate_;           // TRACKING's estimate, waiting for VALIDATING
-    cv::Vec3f reference_color_;    // the target's colour the last time it moved
+    cv::Point2f inner_;          // the inner point after the previous frame
+    Estimate candidate_;         // TRACKING's estimate, waiting for VALIDATING
+    cv::Vec3f reference_color_;  // the target's colour the last time it moved
 
     // The frame being stepped.
     Timestamp now_ = 0;

@@ -22,13 +22,13 @@ struct FrameResult {
     Timestamp timestamp = 0;
     TrackerState state = TrackerState::initializing;  // after this frame
     bool has_target = false;
-    cv::Point2d centroid;  // fractions; valid when has_target
+    cv::Point2d centroid;        // fractions; valid when has_target
     std::optional<double> area;  // fraction; unknown on the frame a search picks a target
-    cv::Point2d inner;     // fractions; valid when has_target
+    cv::Point2d inner;           // fractions; valid when has_target
     bool has_position = false;
-    cv::Point3d position;  // smoothed x, y (fractions) and z (paper 4.3), when has_position
-    double movement = 0.0;  // global inter-frame movement: sum of the compensated difference
-    int iterations = 0;     // estimator iterations spent on this frame
+    cv::Point3d position;    // smoothed x, y (fractions) and z (paper 4.3), when has_position
+    double movement = 0.0;   // global inter-frame movement: sum of the compensated difference
+    int iterations = 0;      // estimator iterations spent on this frame
     bool recovered = false;  // RECOVERING ran this frame and succeeded
     bool lost = false;       // the target was dropped this frame
     LossReason loss = LossReason::none;
@@ -43,7 +43,7 @@ struct TrackerImages {
 };
 
 class Tracker {
-public:
+  public:
     explicit Tracker(const Settings& settings);
     ~Tracker();
     Tracker(const Tracker&) = delete;
@@ -56,7 +56,7 @@ public:
     TrackerImages images() const noexcept;
     const Settings& settings() const noexcept;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

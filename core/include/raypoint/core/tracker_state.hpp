@@ -16,12 +16,12 @@ enum class TrackerState {
 // Why TRACKING gave a target up (paper 4.2 lists the first four).
 enum class LossReason {
     none,
-    too_small,        // area under min_area
-    too_large,        // area over max_area: usually rays leaking through a broken outline
-    still,            // no movement for idle_seconds
-    left,             // kept while still, but its colour no longer matches: it has gone
+    too_small,          // area under min_area
+    too_large,          // area over max_area: usually rays leaking through a broken outline
+    still,              // no movement for idle_seconds
+    left,               // kept while still, but its colour no longer matches: it has gone
     no_recovery_point,  // no recovery point matches the previous inner point's colour
-    recovery_failed,  // the re-estimated inner point did not validate
+    recovery_failed,    // the re-estimated inner point did not validate
 };
 
 // Lower case, as printed in the JSONL output.
