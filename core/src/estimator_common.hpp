@@ -26,6 +26,23 @@ inline float distance(cv::Point2f a, cv::Point2f b) noexcept {
     return std::sqrt(d.dot(d));
 }
 
+// The paper's stopping rule for the iterative estimators: the adjustment of both the centroid
+// and the inner point is negligible (under the tolerance, working pixels).
+class Convergence {
+  public:
+    explicit Convergence(double tolerance) noexcept : tolerance_(tolerance) {}
+    bool settled(cv::Point2f centroid, cv::Point2f inner_before, cv::Point2f inner_after) noexcept {
+        const bool settled = distance(inner_after, inner_before) < tolerance_ &&
+                             distance(centroid, previous_centroid_) < tolerance_;
+        previous_centroid_ = centroid;
+        return settled;
+    }
+
+  private:
+    double tolerance_;
+    cv::Point2f previous_centroid_{-1e6F, -1e6F};  // nothing to compare the first one with
+};
+
 // Casts from `origin`, then again from every hit, `levels` times in all (paper 3.3: n^y rays
 // in the last level). On return `last` holds the last level's hits, n per origin in order;
 // `scratch` is reused storage. Every segment is appended to `rays` when it is not null.

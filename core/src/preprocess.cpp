@@ -165,11 +165,7 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
     const auto tap_count = static_cast<unsigned>(tap_columns_.size());
     cv::Mat& out = color_[current_];
     for (int y = 0; y < settings_.work_height; ++y) {
-        for (unsigned t = 0; t < tap_count; ++t) {
-            tap_row_pointers_[t] =
-                frame.data + static_cast<std::ptrdiff_t>(tap_rows_[t][y]) * frame.stride;
-        }
-        prefetch_rows(frame, y + 1);
+        start_row(frame, y);
         auto* target = out.ptr<std::uint8_t>(y);
         const auto store = [&](int x, unsigned b, unsigned g, unsigned r) {
             target[x * 3 + 0] = static_cast<std::uint8_t>((b + tap_count / 2) / tap_count);
@@ -241,6 +237,15 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
     }
 }
 
+// Points each tap at its input row for working row y, and fetches the rows of the next.
+void Preprocessor::start_row(const FrameView& frame, int y) noexcept {
+    for (std::size_t t = 0; t < tap_row_pointers_.size(); ++t) {
+        tap_row_pointers_[t] =
+            frame.data + static_cast<std::ptrdiff_t>(tap_rows_[t][y]) * frame.stride;
+    }
+    prefetch_rows(frame, y + 1);
+}
+
 // A camera frame arrives cold in memory; the taps read 16 rows at a time, too many streams
 // for the hardware prefetcher, so the rows the next working row adds are fetched ahead.
 void Preprocessor::prefetch_rows(const FrameView& frame, int next_y) const noexcept {
@@ -267,11 +272,7 @@ void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
     const auto tap_count = static_cast<unsigned>(tap_columns_.size());
     cv::Mat& out = color_[current_];
     for (int y = 0; y < settings_.work_height; ++y) {
-        for (unsigned t = 0; t < tap_count; ++t) {
-            tap_row_pointers_[t] =
-                frame.data + static_cast<std::ptrdiff_t>(tap_rows_[t][y]) * frame.stride;
-        }
-        prefetch_rows(frame, y + 1);
+        start_row(frame, y);
         auto* target = out.ptr<std::uint8_t>(y);
         for (int x = 0; x < settings_.work_width; ++x) {
             const bool interior = x >= interior_begin_ && x < interior_end_;

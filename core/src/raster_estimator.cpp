@@ -87,7 +87,7 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
     inner = RayCaster::off_edge(edges, inner, settings_.edge_escape);
 
     Estimate result;
-    cv::Point2f previous_centroid(-1e6F, -1e6F);
+    Convergence convergence(settings_.tolerance);
     for (int i = 0; i < settings_.max_iterations; ++i) {
         trace_.rays.clear();
         cast_levels(caster_, edges, inner, settings_.recasts, hits_, scratch_, &trace_.rays, visit);
@@ -99,10 +99,8 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
             trace_.rays.push_back({walked, hit.point});
         const cv::Point2f moved = RayCaster::walk(edges, walked, mean_point(relocation_));
         result.iterations = i + 1;
-        const bool settled = distance(moved, inner) < settings_.tolerance &&
-                             distance(result.centroid, previous_centroid) < settings_.tolerance;
+        const bool settled = convergence.settled(result.centroid, inner, moved);
         inner = moved;
-        previous_centroid = result.centroid;
         if (settled) break;
     }
     result.centroid = block_centroid();

@@ -50,7 +50,7 @@ Estimate RayEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcep
 Estimate IterativeRayEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcept {
     inner = RayCaster::off_edge(edges, inner, settings_.edge_escape);
     Estimate result;
-    cv::Point2f previous_centroid(-1e6F, -1e6F);
+    Convergence convergence(settings_.tolerance);
     for (int i = 0; i < settings_.max_iterations; ++i) {
         trace_.rays.clear();
         cast_levels(caster_, edges, inner, 1, hits_, scratch_, &trace_.rays, no_visit);
@@ -58,10 +58,8 @@ Estimate IterativeRayEstimator::estimate(const cv::Mat& edges, cv::Point2f inner
         result.area = mean_fan_area(hits_, settings_.rays);
         const cv::Point2f moved = RayCaster::walk(edges, inner, result.centroid);
         result.iterations = i + 1;
-        const bool settled = distance(moved, inner) < settings_.tolerance &&
-                             distance(result.centroid, previous_centroid) < settings_.tolerance;
+        const bool settled = convergence.settled(result.centroid, inner, moved);
         inner = moved;
-        previous_centroid = result.centroid;
         if (settled) break;
     }
     result.inner = relocate(edges, inner);
@@ -72,7 +70,7 @@ Estimate IterativeRayEstimator::estimate(const cv::Mat& edges, cv::Point2f inner
 Estimate IterativeNyRayEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcept {
     inner = RayCaster::off_edge(edges, inner, settings_.edge_escape);
     Estimate result;
-    cv::Point2f previous_centroid(-1e6F, -1e6F);
+    Convergence convergence(settings_.tolerance);
     for (int i = 0; i < settings_.max_iterations; ++i) {
         trace_.rays.clear();
         cast_levels(caster_, edges, inner, settings_.recasts, hits_, scratch_, &trace_.rays,
@@ -81,10 +79,8 @@ Estimate IterativeNyRayEstimator::estimate(const cv::Mat& edges, cv::Point2f inn
         result.area = mean_fan_area(hits_, settings_.rays);
         const cv::Point2f moved = relocate(edges, RayCaster::walk(edges, inner, result.centroid));
         result.iterations = i + 1;
-        const bool settled = distance(moved, inner) < settings_.tolerance &&
-                             distance(result.centroid, previous_centroid) < settings_.tolerance;
+        const bool settled = convergence.settled(result.centroid, inner, moved);
         inner = moved;
-        previous_centroid = result.centroid;
         if (settled) break;
     }
     result.inner = inner;

@@ -48,6 +48,7 @@ class Preprocessor {
     void prepare(const FrameView& frame);
     void filter_bgr(const FrameView& frame) noexcept;
     void filter_yuyv(const FrameView& frame) noexcept;
+    void start_row(const FrameView& frame, int y) noexcept;
     void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
     void compute_edges() noexcept;
     void compute_difference() noexcept;
