@@ -124,6 +124,13 @@ void Preprocessor::prepare(const FrameView& frame) {
         }
     }
     if (interior_begin_ >= interior_end_) interior_begin_ = interior_end_ = 0;
+    uniform_parity_ = true;
+    for (int x = interior_begin_; x < interior_end_; ++x) {
+        if (centre_columns_[x] % 2 != 0) uniform_parity_ = false;
+    }
+    tap_odd_.assign(taps.size(), 0);
+    for (std::size_t t = 0; t < taps.size(); ++t)
+        tap_odd_[t] = (tap_dx_[t] & 1) != 0 ? 1 : 0;
 }
 
 bool Preprocessor::process(const FrameView& frame) noexcept {
@@ -274,16 +281,7 @@ void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
     for (int y = 0; y < settings_.work_height; ++y) {
         start_row(frame, y);
         auto* target = out.ptr<std::uint8_t>(y);
-        for (int x = 0; x < settings_.work_width; ++x) {
-            const bool interior = x >= interior_begin_ && x < interior_end_;
-            unsigned sum_y = 0, sum_u = 0, sum_v = 0;
-            for (unsigned t = 0; t < tap_count; ++t) {
-                const int column = interior ? centre_columns_[x] + tap_dx_[t] : tap_columns_[t][x];
-                const std::uint8_t* pair = tap_row_pointers_[t] + (column & ~1) * 2;
-                sum_y += pair[(column & 1) * 2];
-                sum_u += pair[1];
-                sum_v += pair[3];
-            }
+        const auto store = [&](int x, unsigned sum_y, unsigned sum_u, unsigned sum_v) {
             const int luma = static_cast<int>((sum_y + tap_count / 2) / tap_count) - 16;
             const int u = static_cast<int>((sum_u + tap_count / 2) / tap_count) - 128;
             const int v = static_cast<int>((sum_v + tap_count / 2) / tap_count) - 128;
@@ -291,8 +289,71 @@ void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
             target[x * 3 + 0] = clamp_byte((scaled + 516 * u) >> 8);
             target[x * 3 + 1] = clamp_byte((scaled - 100 * u - 208 * v) >> 8);
             target[x * 3 + 2] = clamp_byte((scaled + 409 * v) >> 8);
+        };
+        int x = 0;
+#if defined(__SSE2__)
+        // With an even centre parity (integer scales: 640, 1280, 1920 wide to 160) a tap's Y is
+        // the first or the second of its pair for every working pixel alike, so four pixels a
+        // step sum whole Y0 U Y1 V groups, split by the tap's parity, and pick the Y at the end.
+        if (uniform_parity_) {
+            for (; x < interior_begin_; ++x)
+                store_yuyv_clamped(x, store);
+            const __m128i zero = _mm_setzero_si128();
+            for (; x + 4 <= interior_end_; x += 4) {
+                __m128i even_low = zero, even_high = zero, odd_low = zero, odd_high = zero;
+                for (unsigned t = 0; t < tap_count; ++t) {
+                    const std::uint8_t* row = tap_row_pointers_[t];
+                    std::uint32_t p[4];
+                    for (int k = 0; k < 4; ++k) {
+                        std::memcpy(&p[k], row + ((centre_columns_[x + k] + tap_dx_[t]) & ~1) * 2,
+                                    4);
+                    }
+                    const __m128i packed =
+                        _mm_setr_epi32(static_cast<int>(p[0]), static_cast<int>(p[1]),
+                                       static_cast<int>(p[2]), static_cast<int>(p[3]));
+                    const __m128i low = _mm_unpacklo_epi8(packed, zero);
+                    const __m128i high = _mm_unpackhi_epi8(packed, zero);
+                    if (tap_odd_[t] != 0) {
+                        odd_low = _mm_add_epi16(odd_low, low);
+                        odd_high = _mm_add_epi16(odd_high, high);
+                    } else {
+                        even_low = _mm_add_epi16(even_low, low);
+                        even_high = _mm_add_epi16(even_high, high);
+                    }
+                }
+                alignas(16) std::uint16_t even[16];
+                alignas(16) std::uint16_t odd[16];
+                _mm_store_si128(reinterpret_cast<__m128i*>(even), even_low);
+                _mm_store_si128(reinterpret_cast<__m128i*>(even + 8), even_high);
+                _mm_store_si128(reinterpret_cast<__m128i*>(odd), odd_low);
+                _mm_store_si128(reinterpret_cast<__m128i*>(odd + 8), odd_high);
+                for (int k = 0; k < 4; ++k) {
+                    const int lane = 4 * k;  // Y0 U Y1 V of pixel k
+                    store(x + k, even[lane] + odd[lane + 2], even[lane + 1] + odd[lane + 1],
+                          even[lane + 3] + odd[lane + 3]);
+                }
+            }
         }
+#endif
+        for (; x < settings_.work_width; ++x)
+            store_yuyv_clamped(x, store);
     }
+}
+
+// One working pixel of a YUYV frame through the clamped column tables (borders, odd scales).
+template <typename Store>
+void Preprocessor::store_yuyv_clamped(int x, Store& store) const noexcept {
+    const auto tap_count = static_cast<unsigned>(tap_columns_.size());
+    const bool interior = x >= interior_begin_ && x < interior_end_;
+    unsigned sum_y = 0, sum_u = 0, sum_v = 0;
+    for (unsigned t = 0; t < tap_count; ++t) {
+        const int column = interior ? centre_columns_[x] + tap_dx_[t] : tap_columns_[t][x];
+        const std::uint8_t* pair = tap_row_pointers_[t] + (column & ~1) * 2;
+        sum_y += pair[(column & 1) * 2];
+        sum_u += pair[1];
+        sum_v += pair[3];
+    }
+    store(x, sum_y, sum_u, sum_v);
 }
 
 // Sobel 3x3 on each channel, replicated border; the magnitude is the L2 norm, saturated to 8

@@ -49,6 +49,8 @@ class Preprocessor {
     void filter_bgr(const FrameView& frame) noexcept;
     void filter_yuyv(const FrameView& frame) noexcept;
     void start_row(const FrameView& frame, int y) noexcept;
+    template <typename Store>
+    void store_yuyv_clamped(int x, Store& store) const noexcept;
     void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
     void compute_edges() noexcept;
     void compute_difference() noexcept;
@@ -65,6 +67,10 @@ class Preprocessor {
     // column of its centre. Working columns in [interior_begin_, interior_end_) need no clamping.
     std::vector<int> tap_dx_;
     std::vector<int> centre_columns_;
+    // YUYV: every interior working column's centre is even, so a tap's Y is at a fixed place
+    // in its pair (tap_odd_).
+    bool uniform_parity_ = false;
+    std::vector<unsigned char> tap_odd_;
     int interior_begin_ = 0;
     int interior_end_ = 0;
     std::vector<const std::uint8_t*> tap_row_pointers_;

@@ -1,0 +1,104 @@
+// The Poisson-disk filter and subsampling (paper 4.1) against a plain reference written from
+// the documented definition: working pixel centre round((i + 0.5) * N / n - 0.5), taps at
+// round(tap * radius) with radius = filter_radius * width / 640, clamped to the frame, summed
+// and divided with rounding. The core's SIMD and clamped paths must match it exactly, in BGR
+// and in YUYV, at sizes that take each path.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "raypoint/core/preprocess.hpp"
+
+namespace {
+
+using raypoint::core::FrameView;
+using raypoint::core::PixelFormat;
+using raypoint::core::PreprocessSettings;
+using raypoint::core::Preprocessor;
+
+int centre(int index, int working, int input) {
+    return static_cast<int>(std::lround((index + 0.5) * input / working - 0.5));
+}
+
+std::uint8_t clamp_byte(int v) { return static_cast<std::uint8_t>(std::clamp(v, 0, 255)); }
+
+// Reference: returns the working BGR image for a BGR or YUYV frame.
+cv::Mat reference(const cv::Mat& frame, PixelFormat format, int width, cv::Size working) {
+    const auto& taps = raypoint::core::poisson_disk_taps();
+    const double radius = 5.0 * width / 640.0;
+    const int n = static_cast<int>(taps.size());
+    cv::Mat out(working, CV_8UC3);
+    for (int y = 0; y < working.height; ++y) {
+        for (int x = 0; x < working.width; ++x) {
+            int sum[3] = {0, 0, 0};
+            for (const auto& tap : taps) {
+                const int column =
+                    std::clamp(centre(x, working.width, width) +
+                                   static_cast<int>(std::lround(tap.x * radius)),
+                               0, width - 1);
+                const int row = std::clamp(centre(y, working.height, frame.rows) +
+                                               static_cast<int>(std::lround(tap.y * radius)),
+                                           0, frame.rows - 1);
+                const std::uint8_t* line = frame.ptr<std::uint8_t>(row);
+                if (format == PixelFormat::bgr) {
+                    for (int c = 0; c < 3; ++c) sum[c] += line[column * 3 + c];
+                } else {
+                    const std::uint8_t* pair = line + (column / 2) * 4;
+                    sum[0] += pair[(column % 2) * 2];  // Y
+                    sum[1] += pair[1];                 // U
+                    sum[2] += pair[3];                 // V
+                }
+            }
+            auto& pixel = out.at<cv::Vec3b>(y, x);
+            if (format == PixelFormat::bgr) {
+                for (int c = 0; c < 3; ++c) pixel[c] = static_cast<std::uint8_t>((sum[c] + n / 2) / n);
+            } else {
+                const int luma = (sum[0] + n / 2) / n - 16;
+                const int u = (sum[1] + n / 2) / n - 128;
+                const int v = (sum[2] + n / 2) / n - 128;
+                const int scaled = 298 * luma + 128;
+                pixel[0] = clamp_byte((scaled + 516 * u) >> 8);
+                pixel[1] = clamp_byte((scaled - 100 * u - 208 * v) >> 8);
+                pixel[2] = clamp_byte((scaled + 409 * v) >> 8);
+            }
+        }
+    }
+    return out;
+}
+
+void expect_matches_reference(cv::Size size, PixelFormat format) {
+    const int bytes_per_row = format == PixelFormat::bgr ? size.width * 3 : size.width * 2;
+    cv::Mat frame(size.height, bytes_per_row, CV_8U);
+    cv::randu(frame, 0, 256);
+    PreprocessSettings settings;
+    Preprocessor preprocessor(settings);
+    ASSERT_TRUE(preprocessor.process(
+        FrameView{frame.data, size.width, size.height, static_cast<int>(frame.step), format, 0}));
+    const cv::Mat expected = reference(frame, format, size.width,
+                                       cv::Size(settings.work_width, settings.work_height));
+    cv::Mat difference;
+    cv::absdiff(preprocessor.color(), expected, difference);
+    EXPECT_EQ(cv::countNonZero(difference.reshape(1)), 0)
+        << size << (format == PixelFormat::bgr ? " BGR" : " YUYV");
+}
+
+// 640, 1280, 1920: integer scales (SIMD interior); 642 and 320: the clamped path.
+TEST(FilterReference, BgrMatchesExactly) {
+    for (const cv::Size size : {cv::Size(640, 480), cv::Size(1280, 720), cv::Size(642, 482),
+                                cv::Size(320, 240), cv::Size(1920, 1080)}) {
+        expect_matches_reference(size, PixelFormat::bgr);
+    }
+}
+
+TEST(FilterReference, YuyvMatchesExactly) {
+    for (const cv::Size size : {cv::Size(640, 480), cv::Size(1280, 720), cv::Size(642, 482),
+                                cv::Size(320, 240), cv::Size(1920, 1080)}) {
+        expect_matches_reference(size, PixelFormat::yuyv);
+    }
+}
+
+}  // namespace
