@@ -193,8 +193,10 @@ void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept 
     double sum_x = 0.0;
     double sum_y = 0.0;
     for (const int index : queue_) {
-        sum_x += index % width_;
-        sum_y += index / width_;
+        const int x = index % width_;
+        const int y = index / width_;  // the row: integer division intended
+        sum_x += x;
+        sum_y += y;
     }
     area = static_cast<double>(queue_.size());
     add_edge_band(edges, area, sum_x, sum_y);

@@ -17,14 +17,16 @@ namespace {
 
 using raypoint::core::FrameView;
 using raypoint::core::PixelFormat;
-using raypoint::core::PreprocessSettings;
 using raypoint::core::Preprocessor;
+using raypoint::core::PreprocessSettings;
 
 int centre(int index, int working, int input) {
     return static_cast<int>(std::lround((index + 0.5) * input / working - 0.5));
 }
 
-std::uint8_t clamp_byte(int v) { return static_cast<std::uint8_t>(std::clamp(v, 0, 255)); }
+std::uint8_t clamp_byte(int v) {
+    return static_cast<std::uint8_t>(std::clamp(v, 0, 255));
+}
 
 // Reference: returns the working BGR image for a BGR or YUYV frame.
 cv::Mat reference(const cv::Mat& frame, PixelFormat format, int width, cv::Size working) {
@@ -36,16 +38,16 @@ cv::Mat reference(const cv::Mat& frame, PixelFormat format, int width, cv::Size 
         for (int x = 0; x < working.width; ++x) {
             int sum[3] = {0, 0, 0};
             for (const auto& tap : taps) {
-                const int column =
-                    std::clamp(centre(x, working.width, width) +
-                                   static_cast<int>(std::lround(tap.x * radius)),
-                               0, width - 1);
+                const int column = std::clamp(
+                    centre(x, working.width, width) + static_cast<int>(std::lround(tap.x * radius)),
+                    0, width - 1);
                 const int row = std::clamp(centre(y, working.height, frame.rows) +
                                                static_cast<int>(std::lround(tap.y * radius)),
                                            0, frame.rows - 1);
                 const std::uint8_t* line = frame.ptr<std::uint8_t>(row);
                 if (format == PixelFormat::bgr) {
-                    for (int c = 0; c < 3; ++c) sum[c] += line[column * 3 + c];
+                    for (int c = 0; c < 3; ++c)
+                        sum[c] += line[column * 3 + c];
                 } else {
                     const std::uint8_t* pair = line + (column / 2) * 4;
                     sum[0] += pair[(column % 2) * 2];  // Y
@@ -55,7 +57,8 @@ cv::Mat reference(const cv::Mat& frame, PixelFormat format, int width, cv::Size 
             }
             auto& pixel = out.at<cv::Vec3b>(y, x);
             if (format == PixelFormat::bgr) {
-                for (int c = 0; c < 3; ++c) pixel[c] = static_cast<std::uint8_t>((sum[c] + n / 2) / n);
+                for (int c = 0; c < 3; ++c)
+                    pixel[c] = static_cast<std::uint8_t>((sum[c] + n / 2) / n);
             } else {
                 const int luma = (sum[0] + n / 2) / n - 16;
                 const int u = (sum[1] + n / 2) / n - 128;
@@ -78,8 +81,8 @@ void expect_matches_reference(cv::Size size, PixelFormat format) {
     Preprocessor preprocessor(settings);
     ASSERT_TRUE(preprocessor.process(
         FrameView{frame.data, size.width, size.height, static_cast<int>(frame.step), format, 0}));
-    const cv::Mat expected = reference(frame, format, size.width,
-                                       cv::Size(settings.work_width, settings.work_height));
+    const cv::Mat expected =
+        reference(frame, format, size.width, cv::Size(settings.work_width, settings.work_height));
     cv::Mat difference;
     cv::absdiff(preprocessor.color(), expected, difference);
     EXPECT_EQ(cv::countNonZero(difference.reshape(1)), 0)
