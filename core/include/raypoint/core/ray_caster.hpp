@@ -11,7 +11,10 @@ namespace raypoint::core {
 // inside the region the ray started in, and a ray recast from it can cross that region.
 struct RayHit {
     cv::Point2f point;
-    float length = 0.0F;  // working pixels from the origin to `point`
+    // Working pixels from the origin to the outline: through `point` into the edge band up to
+    // its ridge (the strongest edge pixel; the middle of a run of equally strong ones), where
+    // the outline runs. To `point` itself when the ray left the image.
+    float length = 0.0F;
 };
 
 class RayCaster {
@@ -41,6 +44,10 @@ class RayCaster {
     static cv::Point2f off_edge(const cv::Mat& edges, cv::Point2f point, int radius) noexcept;
 
   private:
+    // Steps from `from` (the last pixel before an edge) along `d` to the edge band's ridge; 0
+    // when there is no edge ahead (the ray left the image).
+    static float ridge_steps(const cv::Mat& edges, cv::Point2f from, cv::Point2f d) noexcept;
+
     // Unit steps along the major axis: each step enters exactly one new row or column.
     std::vector<cv::Point2f> directions_;
     std::vector<float> step_lengths_;
@@ -76,8 +83,36 @@ void RayCaster::cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHi
             position = next;
             ++steps;
         }
-        hits.push_back({position, static_cast<float>(steps) * step_lengths_[r]});
+        const float ridge = ridge_steps(edges, position, d);
+        hits.push_back({position, (static_cast<float>(steps) + ridge) * step_lengths_[r]});
     }
+}
+
+inline float RayCaster::ridge_steps(const cv::Mat& edges, cv::Point2f from,
+                                    cv::Point2f d) noexcept {
+    // An edge band is a few pixels wide; past this the ray has met another structure.
+    constexpr int band_limit = 4;
+    int strongest = 0;
+    int first_strongest = 0;
+    int last_strongest = 0;
+    int previous = 0;
+    cv::Point2f position = from;
+    for (int k = 1; k <= band_limit; ++k) {
+        position += d;
+        const int x = cvRound(position.x);
+        const int y = cvRound(position.y);
+        if (x < 0 || y < 0 || x >= edges.cols || y >= edges.rows) break;
+        const int strength = edges.ptr<std::uint8_t>(y)[x];
+        if (strength == 0 || strength < previous) break;  // out of the band, or past the ridge
+        if (strength > strongest) {
+            strongest = strength;
+            first_strongest = last_strongest = k;
+        } else if (strength == strongest) {
+            last_strongest = k;
+        }
+        previous = strength;
+    }
+    return 0.5F * static_cast<float>(first_strongest + last_strongest);
 }
 
 }  // namespace raypoint::core
