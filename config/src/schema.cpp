@@ -7,9 +7,14 @@ namespace raypoint::config {
 
 namespace detail {
 
-// Shortest text that reads back as the same double: "0.9", not "0.900000".
+// Shortest text that reads back as the same double: "0.9", not "0.900000". Whole numbers are
+// written out ("9600", not "9.6e+03"): they are what people type in an INI file.
 std::string format_real(double value) {
     char buffer[64];
+    if (value == std::floor(value) && std::abs(value) < 1e15) {
+        std::snprintf(buffer, sizeof buffer, "%.0f", value);
+        return buffer;
+    }
     for (int precision = 1; precision <= 17; ++precision) {
         std::snprintf(buffer, sizeof buffer, "%.*g", precision, value);
         if (std::strtod(buffer, nullptr) == value) break;
@@ -59,8 +64,6 @@ const Key* find_key(std::string_view section, std::string_view name) noexcept {
     return nullptr;
 }
 
-namespace {
-
 std::size_t edit_distance(std::string_view a, std::string_view b) {
     std::vector<std::size_t> row(b.size() + 1);
     for (std::size_t j = 0; j <= b.size(); ++j)
@@ -77,8 +80,6 @@ std::size_t edit_distance(std::string_view a, std::string_view b) {
     return row[b.size()];
 }
 
-}  // namespace
-
 std::string nearest_key(std::string_view wanted) {
     std::string best;
     std::size_t best_distance = SIZE_MAX;
@@ -93,6 +94,23 @@ std::string nearest_key(std::string_view wanted) {
         }
     }
     return best;
+}
+
+std::string nearest_section(std::string_view wanted, std::span<const std::string_view> extra) {
+    std::string_view best;
+    std::size_t best_distance = SIZE_MAX;
+    const auto consider = [&](std::string_view section) {
+        const std::size_t distance = edit_distance(wanted, section);
+        if (distance < best_distance) {
+            best_distance = distance;
+            best = section;
+        }
+    };
+    for (const auto& key : schema())
+        consider(key.section);
+    for (const auto section : extra)
+        consider(section);
+    return std::string(best);
 }
 
 void apply_assignment(Config& config, std::string_view assignment) {
@@ -131,6 +149,10 @@ std::vector<std::string> cross_check(const Config& config) {
     if (config.core.estimator.block_size >
         std::min(preprocess.work_width, preprocess.work_height)) {
         problems.push_back("estimator.block_size must fit in the working image");
+    }
+    if (const auto problem = core::pointer_settings_problem(config.core.pointer);
+        !problem.empty()) {
+        problems.emplace_back(problem);
     }
     return problems;
 }

@@ -155,6 +155,95 @@ const std::vector<Key>& schema() {
             "output", "one_euro_d_cutoff", 0.001, 100.0,
             "one-euro: cutoff of the speed estimate in Hz",
             [](auto& c) -> auto& { return c.core.output.one_euro_d_cutoff; }),
+        // [pointer] docs/pointer.md: tracked position to cursor motion
+        choice_key<core::PointerMode>(
+            "pointer", "mode",
+            "relative (REL_X/REL_Y, like a mouse) or absolute (the view maps onto the screen)",
+            {{core::PointerMode::relative, "relative"}, {core::PointerMode::absolute, "absolute"}},
+            [](auto& c) -> auto& { return c.core.pointer.motion.mode; }),
+        boolean_key(
+            "pointer", "mirror", "mirror the camera horizontally, so moving right moves right",
+            [](auto& c) -> auto& { return c.core.pointer.motion.mirror; }),
+        real_key(
+            "pointer", "gain", 0.0, 100000.0,
+            "relative: device pixels per frame width of hand motion at slow speed",
+            [](auto& c) -> auto& { return c.core.pointer.motion.gain; }),
+        real_key(
+            "pointer", "dead_zone", 0.0, 10.0,
+            "relative: frame widths per second taken off the hand's speed (jitter moves nothing)",
+            [](auto& c) -> auto& { return c.core.pointer.motion.dead_zone; }),
+        real_key(
+            "pointer", "acceleration", 0.0, 100.0,
+            "relative: gain x (1 + this x speed over the dead zone in frame widths per second)",
+            [](auto& c) -> auto& { return c.core.pointer.motion.acceleration; }),
+        integer_key(
+            "pointer", "absolute_max", 1, 1000000,
+            "absolute: the device range is 0 to this on both axes",
+            [](auto& c) -> auto& { return c.core.pointer.motion.absolute_max; }),
+        real_key(
+            "pointer", "active_left", 0.0, 1.0,
+            "absolute: left edge of the view's active area, fraction of the mirrored frame",
+            [](auto& c) -> auto& { return c.core.pointer.motion.active_left; }),
+        real_key(
+            "pointer", "active_right", 0.0, 1.0,
+            "absolute: right edge of the view's active area, fraction of the mirrored frame",
+            [](auto& c) -> auto& { return c.core.pointer.motion.active_right; }),
+        real_key(
+            "pointer", "active_top", 0.0, 1.0,
+            "absolute: top edge of the view's active area, fraction of the frame",
+            [](auto& c) -> auto& { return c.core.pointer.motion.active_top; }),
+        real_key(
+            "pointer", "active_bottom", 0.0, 1.0,
+            "absolute: bottom edge of the view's active area, fraction of the frame",
+            [](auto& c) -> auto& { return c.core.pointer.motion.active_bottom; }),
+        // [click] docs/pointer.md: a push toward the camera clicks; rises are of sqrt(area)
+        choice_key<core::ClickMode>(
+            "click", "mode", "click by pushing toward the camera, by dwelling still, or not at all",
+            {{core::ClickMode::depth, "depth"},
+             {core::ClickMode::dwell, "dwell"},
+             {core::ClickMode::off, "off"}},
+            [](auto& c) -> auto& { return c.core.pointer.click.mode; }),
+        real_key(
+            "click", "start_rise", 0.0, 5.0,
+            "a push begins when sqrt(area) rises this far over its baseline (0.05 = 5%)",
+            [](auto& c) -> auto& { return c.core.pointer.click.start_rise; }),
+        real_key(
+            "click", "press_rise", 0.0, 5.0,
+            "the button goes down when the rise reaches this within push_seconds",
+            [](auto& c) -> auto& { return c.core.pointer.click.press_rise; }),
+        real_key(
+            "click", "release_rise", 0.0, 5.0,
+            "the button comes up when the rise falls to this (below press_rise: hysteresis)",
+            [](auto& c) -> auto& { return c.core.pointer.click.release_rise; }),
+        real_key(
+            "click", "push_seconds", 0.0, 10.0,
+            "seconds from the push's beginning to the press at most; slower is an approach",
+            [](auto& c) -> auto& { return c.core.pointer.click.push_seconds; }),
+        real_key(
+            "click", "refractory_seconds", 0.0, 10.0,
+            "seconds after a release during which no press can come",
+            [](auto& c) -> auto& { return c.core.pointer.click.refractory_seconds; }),
+        real_key(
+            "click", "drag_seconds", 0.0, 600.0,
+            "held pushed this many seconds, the press becomes a drag: x and y move again",
+            [](auto& c) -> auto& { return c.core.pointer.click.drag_seconds; }),
+        real_key(
+            "click", "baseline_seconds", 0.0, 600.0,
+            "time constant of the baseline that follows slow changes in distance",
+            [](auto& c) -> auto& { return c.core.pointer.click.baseline_seconds; }),
+        // [dwell] click.mode = dwell
+        real_key(
+            "dwell", "seconds", 0.0, 60.0, "the cursor held still this many seconds clicks",
+            [](auto& c) -> auto& { return c.core.pointer.dwell.seconds; }),
+        real_key(
+            "dwell", "radius", 0.0, 1.0,
+            "still means within this distance of where it stopped, in frame widths",
+            [](auto& c) -> auto& { return c.core.pointer.dwell.radius; }),
+        // [safety]
+        real_key(
+            "safety", "min_tracking_seconds", 0.0, 600.0,
+            "no click until the target has been tracked this many seconds",
+            [](auto& c) -> auto& { return c.core.pointer.safety.min_tracking_seconds; }),
     };
     return keys;
 }

@@ -7,10 +7,11 @@
 #include <vector>
 
 #include "compare_command.hpp"
+#include "config_commands.hpp"
 #include "demo_command.hpp"
 #include "errors.hpp"
-#include "raypoint/config/schema.hpp"
-#include "settings_options.hpp"
+#include "raypoint/config/ini_file.hpp"
+#include "run_command.hpp"
 #include "track_command.hpp"
 
 namespace {
@@ -18,6 +19,19 @@ namespace {
 constexpr std::string_view usage = R"(usage: raypoint COMMAND [options]
 
 commands:
+  run              the daemon: webcam in, a virtual pointer out (a systemd user
+                   service: systemctl --user enable --now raypoint)
+      --camera DEVICE        /dev/videoN, /dev/v4l/by-id/..., or auto (default)
+      --lock-exposure        lock auto exposure, gain and white balance
+      --input FILE           a recorded video instead of the camera, at its own pace
+      --unpaced              with --input: as fast as the core runs
+      --sink SPEC            uinput (default), file:PATH (the events as text), null
+      --control PATH         control socket (default $XDG_RUNTIME_DIR/raypoint.sock)
+      --no-control           no control socket
+                   SIGHUP reloads the configuration; SIGINT and SIGTERM stop it,
+                   releasing every button.
+  ctl pause|resume|recenter|status
+                   talk to the running daemon (--control PATH as for run)
   track INPUT      track a recorded video or image sequence ("frames/%04d.png"),
                    one line a frame on stdout
       --format jsonl|csv     output format (default jsonl)
@@ -30,23 +44,19 @@ commands:
       --scene NAME           scene preset (default nonconvex)
       --annotate OUT.mp4     annotated clip (default raypoint-demo.mp4)
   compare-estimators         measure the four estimators (docs/estimators.md)
-  print-config     print the effective configuration as an INI file
+  print-config     print the effective configuration as an INI file (the file
+                   raypoint run reads, see check-config, and the options below)
+      --defaults             read no configuration file
+  check-config [FILE]        check a configuration file, or the one raypoint run
+                             reads ($XDG_CONFIG_HOME/raypoint/raypoint.ini, then
+                             raypoint/raypoint.ini in $XDG_CONFIG_DIRS)
 
-options for track, demo and print-config:
+options for run, track, demo, compare-estimators and print-config:
+  --config FILE              read the settings from an INI file (see print-config)
   --preset default|paper     start from the measured defaults or the paper exactly
   --estimator NAME           ray|iterative-ray|iterative-ny-ray|raster
   --set section.key=value    change one setting (repeatable; see print-config)
 )";
-
-int print_config(std::span<const std::string_view> args) {
-    std::vector<std::string_view> rest;
-    const auto config = raypoint::daemon::parse_settings_options(args, rest);
-    if (!rest.empty()) {
-        throw raypoint::daemon::UsageError(std::string(rest.front()) + ": unknown option");
-    }
-    std::fputs(raypoint::config::to_ini(config).c_str(), stdout);
-    return 0;
-}
 
 }  // namespace
 
@@ -59,15 +69,22 @@ int main(int argc, char** argv) {
     const std::string_view command = all[0];
     const std::span<const std::string_view> args(all.data() + 1, all.size() - 1);
     try {
+        if (command == "run") return raypoint::daemon::run_command(args);
+        if (command == "ctl") return raypoint::daemon::ctl_command(args);
         if (command == "track") return raypoint::daemon::track_command(args);
         if (command == "demo") return raypoint::daemon::demo_command(args);
         if (command == "compare-estimators") return raypoint::daemon::compare_command(args);
-        if (command == "print-config") return print_config(args);
+        if (command == "print-config") return raypoint::daemon::print_config_command(args);
+        if (command == "check-config") return raypoint::daemon::check_config_command(args);
         throw raypoint::daemon::UsageError(std::string(command) +
                                            ": unknown command (see raypoint --help)");
     } catch (const raypoint::daemon::UsageError& e) {
         std::fprintf(stderr, "raypoint %s: %s\n", std::string(command).c_str(), e.what());
         return 2;
+    } catch (const raypoint::config::InvalidConfig& e) {
+        for (const auto& error : e.errors())
+            std::fprintf(stderr, "raypoint %s: %s\n", std::string(command).c_str(), error.c_str());
+        return 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "raypoint %s: %s\n", std::string(command).c_str(), e.what());
         return 1;

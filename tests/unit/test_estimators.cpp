@@ -102,17 +102,17 @@ TEST_P(Disk, CentroidAndAreaFromTheCentreAndOffCentre) {
 // -0.8%. Ray lengths run to the outline's ridge; when they stopped at the last pixel inside,
 // the ray estimators read the disk 16-17% small. One cast from (70, 55) is not centred (paper
 // 3.1's drawback): its mean hit is 5.6 px toward the start, the tightest bound it meets is 6 px.
-INSTANTIATE_TEST_SUITE_P(
-    Kinds, Disk,
-    ::testing::Values(DiskCase{EstimatorKind::ray, 6.0, -0.05, 0.05},
-                      DiskCase{EstimatorKind::iterative_ray, 1.0, -0.05, 0.05},
-                      DiskCase{EstimatorKind::iterative_ny_ray, 1.0, -0.05, 0.05},
-                      DiskCase{EstimatorKind::raster, 1.0, -0.05, 0.05}),
-    [](const auto& test_info) {
-        std::string name(to_string(test_info.param.kind));
-        std::replace(name.begin(), name.end(), '-', '_');
-        return name;
-    });
+INSTANTIATE_TEST_SUITE_P(Kinds, Disk,
+                         ::testing::Values(DiskCase{EstimatorKind::ray, 6.0, -0.05, 0.05},
+                                           DiskCase{EstimatorKind::iterative_ray, 1.0, -0.05, 0.05},
+                                           DiskCase{EstimatorKind::iterative_ny_ray, 1.0, -0.05,
+                                                    0.05},
+                                           DiskCase{EstimatorKind::raster, 1.0, -0.05, 0.05}),
+                         [](const auto& test_info) {
+                             std::string name(to_string(test_info.param.kind));
+                             std::replace(name.begin(), name.end(), '-', '_');
+                             return name;
+                         });
 
 TEST(RasterBlocks, PaperAreaIsWholeBlocks) {
     // The paper's 8-rasterization: 26 blocks x 64 = 1664 for the disk, 32% over; the block

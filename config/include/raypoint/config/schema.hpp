@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -35,6 +36,11 @@ const std::vector<Key>& schema();
 const Key* find_key(std::string_view section, std::string_view name) noexcept;
 // The valid "section.name" closest to `wanted` by edit distance, for "did you mean".
 std::string nearest_key(std::string_view wanted);
+// Levenshtein distance: the edits (insert, delete, replace a character) that turn a into b.
+std::size_t edit_distance(std::string_view a, std::string_view b);
+// The section closest to `wanted` among the schema's sections and `extra` ones (sections a reader
+// handles itself, like the INI file's [general]), for "did you mean".
+std::string nearest_section(std::string_view wanted, std::span<const std::string_view> extra = {});
 
 // A setting that cannot be applied. The message is complete and ready to print.
 class ConfigError : public std::runtime_error {

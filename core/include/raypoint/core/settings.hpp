@@ -3,6 +3,8 @@
 // comment says otherwise; config/schema.cpp is the one place that names, ranges and documents
 // them, and docs/settings.md explains each deviation from the paper.
 
+#include "raypoint/core/pointer_settings.hpp"
+
 namespace raypoint::core {
 
 enum class EdgeSource {
@@ -101,6 +103,7 @@ struct Settings {
     EstimatorSettings estimator;
     TrackingSettings tracking;
     OutputSettings output;
+    PointerSettings pointer;
 };
 
 // The paper's system exactly: every deviation above switched back to what the paper says.

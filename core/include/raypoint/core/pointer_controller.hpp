@@ -1,0 +1,55 @@
+#pragma once
+// The whole pointer: tracker results in, device commands out. Joins the motion mapping, the
+// click (by depth or dwell) and the safety rules: clicks only after min_tracking_seconds of
+// TRACKING, every button released when the target is lost, release_all() for pause and exit.
+// Pure: frame time only, no allocation, no exceptions.
+
+#include <array>
+#include <optional>
+
+#include "raypoint/core/click_machine.hpp"
+#include "raypoint/core/dwell_clicker.hpp"
+#include "raypoint/core/pointer_command.hpp"
+#include "raypoint/core/pointer_mapper.hpp"
+#include "raypoint/core/pointer_settings.hpp"
+#include "raypoint/core/tracker.hpp"
+
+namespace raypoint::core {
+
+class PointerController {
+  public:
+    // frame_aspect: the camera frame's width / height (640x480: 4/3).
+    explicit PointerController(const PointerSettings& settings,
+                               double frame_aspect = 4.0 / 3.0) noexcept;
+
+    // One tracker result, in timestamp order.
+    PointerCommand update(const FrameResult& frame) noexcept;
+
+    // Pause, exit, a signal: the releases of every button down, and a fresh start (no motion
+    // jump on the next frame, min_tracking_seconds again before a click).
+    PointerCommand release_all() noexcept;
+
+    const ClickMachine& click_machine() const noexcept { return clicker_; }
+    DwellState dwell_state() const noexcept { return dweller_.state(); }
+    bool is_down(Button button) const noexcept { return down_[index(button)]; }
+
+  private:
+    static std::size_t index(Button button) noexcept { return static_cast<std::size_t>(button); }
+    void change(PointerCommand& command, Button button, bool pressed) noexcept;
+    void release_down(PointerCommand& command) noexcept;
+    void depth_click(const ClickStep& step, const Motion& motion, PointerCommand& command) noexcept;
+
+    PointerSettings settings_;
+    double frame_aspect_;
+    PointerMapper mapper_;
+    ClickMachine clicker_;
+    DwellClicker dweller_;
+    std::optional<Timestamp> tracking_since_;
+    std::array<bool, 3> down_{};
+    // Relative: device pixels emitted since the push began, undone by the press.
+    cv::Point undo_;
+    // Absolute: where the cursor was before the push began, restored by the press.
+    std::optional<cv::Point> before_push_;
+};
+
+}  // namespace raypoint::core

@@ -1,0 +1,99 @@
+#pragma once
+// Every tunable of the pointer: how the tracked position moves the cursor, how a push toward the
+// camera or a dwell clicks, and when clicks are allowed at all. Plain data; config/schema_table.cpp
+// names, ranges and documents each key, and docs/pointer.md says why each default is what it is.
+
+#include <string_view>
+
+namespace raypoint::core {
+
+enum class PointerMode {
+    relative,  // REL_X / REL_Y: hand motion moves the cursor, like a mouse
+    absolute,  // ABS_X / ABS_Y: the hand's place in the camera's view is the cursor's on screen
+};
+
+enum class ClickMode {
+    depth,  // push toward the camera to press, pull back to release (click_machine.hpp)
+    dwell,  // hold the cursor still to click (dwell_clicker.hpp)
+    off,    // motion only
+};
+
+// [pointer]. Positions are the tracker's smoothed x, y: fractions of the frame's width and height.
+// Speeds and distances are in frame widths (y converted by the frame's aspect ratio), so a hand
+// moving 1 cm moves the cursor the same way in any direction.
+struct MotionSettings {
+    PointerMode mode = PointerMode::relative;
+    // The camera faces the user: without mirroring, moving the hand right moves the cursor left.
+    bool mirror = true;
+    // Relative: device pixels per frame width of hand motion at slow speed. A hand's centroid
+    // stays within about the middle 0.8 of the frame while the hand is fully visible, and 0.8 x
+    // 2400 = 1920 crosses a full-HD screen in one sweep (there is no clutch to lift).
+    double gain = 2400.0;
+    // Relative: frame widths per second subtracted from the hand's speed. A held hand measures
+    // at most 0.004 on the rendered scenes; slow deliberate aiming (1 cm/s at 60 cm) is 0.015.
+    double dead_zone = 0.01;
+    // Relative: the gain is multiplied by 1 + acceleration x (speed over the dead zone, frame
+    // widths per second): a slow hand aims to the pixel, a fast sweep (1 width/s) goes 2x as far.
+    double acceleration = 1.0;
+    // Absolute: the device range is 0..absolute_max on both axes (uinput ABS_X / ABS_Y).
+    int absolute_max = 65535;
+    // Absolute: the part of the (mirrored) view that maps onto the whole screen, as fractions of
+    // the frame. A hand's centroid is half a hand from the border while the hand is fully in
+    // view, and the tracker loses a hand the border cuts, so the full frame would leave the
+    // screen's edges out of reach.
+    double active_left = 0.1;
+    double active_right = 0.9;
+    double active_top = 0.1;
+    double active_bottom = 0.9;
+};
+
+// [click], click.mode = depth. A "rise" is sqrt(area) over its baseline, minus 1: 0.2 means the
+// target's projection is 20% wider, i.e. the target came 17% closer (sqrt(area) ~ 1 / depth).
+struct ClickSettings {
+    ClickMode mode = ClickMode::depth;
+    // A push begins when the rise leaves this (40x the rendered scenes' still-hand noise of
+    // 0.12%); motion after that is undone when the press comes.
+    double start_rise = 0.05;
+    // The press: the rise reaches this within push_seconds of the push's beginning. The push
+    // scene's pushes reach 0.25 in 0.17 s and peak at 0.35; a hand moving closer on the other
+    // scenes reaches at most 0.14 within 0.25 s (docs/pointer.md).
+    double press_rise = 0.20;
+    double release_rise = 0.10;  // the release, on pulling back: half the press, for hysteresis
+    // A rise slower than this is an approach, not a push: with 0.35 s ordinary approaches reach
+    // 0.19, a hair under the press; 0.25 s still allows a push 1.5x slower than the scene's.
+    double push_seconds = 0.25;
+    // No press for this long after a release: a target that wobbles back does not click twice.
+    double refractory_seconds = 0.3;
+    double drag_seconds = 0.8;  // held pushed this long: a drag, x and y move again
+    // Time constant of the baseline's exponential average (frame time): it follows a user who
+    // drifts closer or away, so a click works again 1.6 s after settling at a new distance.
+    // It is held while a push may be under way, so it never swallows one.
+    double baseline_seconds = 1.0;
+};
+
+// [dwell], click.mode = dwell.
+struct DwellSettings {
+    double seconds = 1.0;   // still this long clicks: longer than a pause to look, short to wait
+    double radius = 0.015;  // frame widths: about 1 cm at 60 cm, over hand tremor, under a move
+};
+
+// [safety]
+struct SafetySettings {
+    // Clicks only once the tracker has tracked the target this long: a target sliding into the
+    // view grows by up to 26% within 0.35 s in its first second (rendered entries): a push.
+    double min_tracking_seconds = 1.0;
+};
+
+struct PointerSettings {
+    MotionSettings motion;
+    ClickSettings click;
+    DwellSettings dwell;
+    SafetySettings safety;
+};
+
+// The first rule across keys that `settings` breaks, as a complete sentence; empty when none.
+// For config's cross_check. With broken settings the classes still never divide by zero (an
+// empty active region maps the whole frame), but clicks do what the values say.
+std::string_view pointer_settings_problem(const PointerSettings& settings) noexcept;
+
+}  // namespace raypoint::core

@@ -1,0 +1,130 @@
+#include "raypoint/core/pointer_controller.hpp"
+
+#include <cmath>
+
+namespace raypoint::core {
+namespace {
+
+void put_motion(PointerCommand& command, const Motion& motion) noexcept {
+    command.dx = motion.dx;
+    command.dy = motion.dy;
+    command.has_absolute = motion.has_absolute;
+    command.abs_x = motion.abs_x;
+    command.abs_y = motion.abs_y;
+}
+
+}  // namespace
+
+PointerController::PointerController(const PointerSettings& settings, double frame_aspect) noexcept
+    : settings_(settings),
+      frame_aspect_(frame_aspect > 0.0 ? frame_aspect : 4.0 / 3.0),
+      mapper_(settings.motion, frame_aspect_),
+      clicker_(settings.click),
+      dweller_(settings.dwell) {}
+
+void PointerController::change(PointerCommand& command, Button button, bool pressed) noexcept {
+    bool& down = down_[index(button)];
+    if (down == pressed) return;  // the device already has it so
+    down = pressed;
+    command.add(button, pressed);
+}
+
+void PointerController::release_down(PointerCommand& command) noexcept {
+    for (const Button button : {Button::left, Button::right, Button::middle})
+        change(command, button, false);
+}
+
+PointerCommand PointerController::release_all() noexcept {
+    PointerCommand command;
+    clicker_.release_all();
+    dweller_.reset();
+    mapper_.reset();
+    tracking_since_.reset();
+    undo_ = {};
+    before_push_.reset();
+    release_down(command);
+    return command;
+}
+
+PointerCommand PointerController::update(const FrameResult& frame) noexcept {
+    const Timestamp now = frame.timestamp;
+    const bool tracking = frame.state == TrackerState::tracking;
+    if (!tracking) {
+        tracking_since_.reset();
+    } else if (!tracking_since_) {
+        tracking_since_ = now;  // the frame that picked the target
+    }
+    // The frame that picks a target has neither area nor position: it moves and clicks nothing.
+    const bool has_target = tracking && frame.has_position && frame.area && *frame.area > 0.0;
+    const bool ready = has_target && static_cast<double>(now - *tracking_since_) / 1e6 >=
+                                         settings_.safety.min_tracking_seconds;
+    const cv::Point2d position(frame.position.x, frame.position.y);
+
+    PointerCommand command;
+    switch (settings_.click.mode) {
+        case ClickMode::depth: {
+            const std::optional<double> scale =
+                has_target ? std::optional<double>(std::sqrt(*frame.area)) : std::nullopt;
+            const ClickStep step = clicker_.step(now, scale, ready);
+            const bool hold = step.state == ClickState::pressed;
+            const Motion motion = mapper_.update(now, has_target, position, hold);
+            depth_click(step, motion, command);
+            break;
+        }
+        case ClickMode::dwell: {
+            const Motion motion = mapper_.update(now, has_target, position, false);
+            put_motion(command, motion);
+            // Frame widths on both axes, so the radius is a circle on the hand's plane.
+            const std::optional<cv::Point2d> where =
+                has_target ? std::optional<cv::Point2d>(
+                                 cv::Point2d(position.x, position.y / frame_aspect_))
+                           : std::nullopt;
+            if (dweller_.step(now, where, ready)) {
+                change(command, Button::left, true);
+                change(command, Button::left, false);
+            }
+            break;
+        }
+        case ClickMode::off: {
+            const Motion motion = mapper_.update(now, has_target, position, false);
+            put_motion(command, motion);
+            break;
+        }
+    }
+    if (!has_target) {
+        // Nothing stays pressed while the user cannot see it being tracked.
+        release_down(command);
+        undo_ = {};
+        before_push_.reset();
+    }
+    return command;
+}
+
+void PointerController::depth_click(const ClickStep& step, const Motion& motion,
+                                    PointerCommand& command) noexcept {
+    if (step.press) {
+        // The press frame's own motion is held; the motion since the push began is undone, so
+        // the button goes down where the cursor was when the push started.
+        command.dx = -undo_.x;
+        command.dy = -undo_.y;
+        if (before_push_) {
+            command.has_absolute = true;
+            command.abs_x = before_push_->x;
+            command.abs_y = before_push_->y;
+        }
+        undo_ = {};
+        change(command, Button::left, true);
+        return;
+    }
+    put_motion(command, motion);
+    if (step.state == ClickState::rising) {
+        undo_ += cv::Point(motion.dx, motion.dy);
+    } else {
+        // Only idle leads to rising, so the last frame outside it is the one the push began at.
+        undo_ = {};
+        if (motion.has_absolute) before_push_ = cv::Point(motion.abs_x, motion.abs_y);
+    }
+    if (step.release) change(command, Button::left, false);
+}
+
+}  // namespace raypoint::core

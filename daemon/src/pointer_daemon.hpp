@@ -1,0 +1,75 @@
+#pragma once
+// The loop of `raypoint run`: frames from a source through the tracker and the pointer to an
+// event sink, with the camera's loss and return, pause/resume/recenter/status over the control
+// socket, SIGHUP reload, SIGINT/SIGTERM exit, and systemd's notify protocol. Every pressed
+// button is released on loss, pause, reload and exit.
+
+#include <signal.h>
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "control_socket.hpp"
+#include "event_sink.hpp"
+#include "frame_source.hpp"
+#include "raypoint/config/config.hpp"
+#include "raypoint/core/pointer_controller.hpp"
+#include "raypoint/core/tracker.hpp"
+#include "run_statistics.hpp"
+#include "sd_notify.hpp"
+
+namespace raypoint::daemon {
+
+// Blocks SIGINT, SIGTERM and SIGHUP in the calling thread and every thread it starts later;
+// the daemon reads them from a signalfd. Call before opening the camera or a video.
+sigset_t block_daemon_signals();
+
+struct DaemonParts {
+    config::Config config;
+    std::unique_ptr<FrameSource> source;
+    std::unique_ptr<EventSink> sink;
+    std::unique_ptr<ControlServer> control;  // null: no control socket
+    bool stop_at_end_of_input = false;       // a recorded video: exit when it ends
+    // SIGHUP: the new configuration, or throws config::ConfigError to keep the running one.
+    std::function<config::Config()> reload;
+};
+
+class PointerDaemon {
+  public:
+    explicit PointerDaemon(DaemonParts parts);
+    ~PointerDaemon();
+    PointerDaemon(const PointerDaemon&) = delete;
+    PointerDaemon& operator=(const PointerDaemon&) = delete;
+
+    // Runs until SIGINT or SIGTERM (or the end of a recorded input). Returns the exit code.
+    int run();
+
+  private:
+    void on_frame(const core::FrameView& frame);
+    void on_lost(const std::string& reason);
+    bool handle_signals();  // false: stop
+    void handle_control();
+    void reload();
+    void release_buttons();
+    void report(RunStatistics::Clock::time_point now);
+    std::string status_text() const;
+
+    DaemonParts parts_;
+    std::unique_ptr<core::Tracker> tracker_;
+    std::optional<core::PointerController> pointer_;  // made at the first frame (its aspect)
+    SdNotifier notifier_;
+    RunStatistics statistics_;
+    int signal_fd_ = -1;
+    bool paused_ = false;
+    bool camera_lost_ = false;
+    std::string lost_reason_;
+    RunStatistics::Clock::time_point next_reopen_{};
+    core::Timestamp last_timestamp_ = 0;
+    core::FrameResult last_result_{};
+    cv::Point2d recenter_offset_{0.0, 0.0};
+    long long lost_count_ = 0;
+};
+
+}  // namespace raypoint::daemon

@@ -1,0 +1,82 @@
+#!/bin/bash
+# raypoint run end to end on rendered clips, with the event sink that records to a file: the
+# push gesture clicks exactly twice, a clip without one never clicks; the control socket, SIGHUP
+# reload (a broken file keeps the running configuration), SIGTERM; and bad input.
+# usage: test_run_cli.sh RAYPOINT RENDER_SCENE
+set -u
+raypoint=$1
+render=$2
+work=$(mktemp -d)
+daemon_pid=""
+trap '[ -n "$daemon_pid" ] && kill -9 "$daemon_pid" 2>/dev/null; rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+export XDG_RUNTIME_DIR="$work/runtime" XDG_CONFIG_HOME="$work/config" XDG_CONFIG_DIRS="$work/none"
+mkdir -p "$XDG_RUNTIME_DIR"
+
+"$render" --preset push --out "$work/push" --no-masks >/dev/null || { echo "cannot render"; exit 1; }
+"$render" --preset nonconvex --out "$work/nonconvex" --no-masks >/dev/null || exit 1
+
+# Clicks from a push gesture, none without one.
+timeout 120 "$raypoint" run --input "$work/push/video.mp4" --unpaced --no-control \
+  --sink "file:$work/push.events" 2>"$work/push.log" || fail "run on push exited $?"
+presses=$(grep -c 'EV_KEY BTN_LEFT 1$' "$work/push.events")
+releases=$(grep -c 'EV_KEY BTN_LEFT 0$' "$work/push.events")
+[ "$presses" -eq 2 ] && [ "$releases" -eq 2 ] || fail "push: $presses presses, $releases releases (expected 2, 2)"
+# The pushes start at 5.0 s and 6.6 s: each press within 0.5 s of its push.
+first=$(grep 'EV_KEY BTN_LEFT 1$' "$work/push.events" | head -1 | cut -d' ' -f1)
+second=$(grep 'EV_KEY BTN_LEFT 1$' "$work/push.events" | sed -n 2p | cut -d' ' -f1)
+[ "${first:-0}" -ge 5000000 ] && [ "${first:-0}" -le 5500000 ] || fail "first press at ${first:-none} us"
+[ "${second:-0}" -ge 6600000 ] && [ "${second:-0}" -le 7100000 ] || fail "second press at ${second:-none} us"
+grep -q 'EV_REL REL_X' "$work/push.events" || fail "push: no motion"
+timeout 120 "$raypoint" run --input "$work/nonconvex/video.mp4" --unpaced --no-control \
+  --sink "file:$work/nonconvex.events" 2>/dev/null || fail "run on nonconvex exited $?"
+[ "$(grep -c 'EV_KEY' "$work/nonconvex.events")" -eq 0 ] || fail "nonconvex clicked"
+grep -q 'EV_REL REL_X' "$work/nonconvex.events" || fail "nonconvex: no motion"
+
+# The live loop: paced replay, control socket, reload, stop.
+mkdir -p "$XDG_CONFIG_HOME/raypoint"
+"$raypoint" run --input "$work/push/video.mp4" --sink "file:$work/live.events" 2>"$work/live.log" &
+daemon_pid=$!
+for _ in $(seq 50); do [ -S "$XDG_RUNTIME_DIR/raypoint.sock" ] && break; sleep 0.1; done
+sleep 1
+"$raypoint" ctl status > "$work/status.txt" || fail "ctl status exited $?"
+grep -q '^state: ' "$work/status.txt" || fail "status: $(cat "$work/status.txt")"
+grep -q '^paused: no' "$work/status.txt" || fail "status before pause: $(cat "$work/status.txt")"
+[ "$("$raypoint" ctl pause)" = "paused" ] || fail "ctl pause"
+"$raypoint" ctl status | grep -q '^paused: yes' || fail "status after pause"
+[ "$("$raypoint" ctl resume)" = "resumed" ] || fail "ctl resume"
+echo "[tracking]
+min_area = 7" > "$XDG_CONFIG_HOME/raypoint/raypoint.ini"
+kill -HUP "$daemon_pid"
+sleep 0.5
+kill -0 "$daemon_pid" 2>/dev/null || fail "the daemon died on a reload with a broken file"
+grep -q "reload failed, keeping the running configuration" "$work/live.log" || fail "no reload error: $(cat "$work/live.log")"
+grep -q "raypoint.ini:2: \[tracking\] min_area: value out of range" "$work/live.log" || fail "reload error without file:line"
+rm "$XDG_CONFIG_HOME/raypoint/raypoint.ini"
+kill -HUP "$daemon_pid"
+sleep 0.3
+grep -q "configuration reloaded" "$work/live.log" || fail "no reload"
+kill -TERM "$daemon_pid"
+wait "$daemon_pid"
+code=$?
+daemon_pid=""
+[ "$code" -eq 0 ] || fail "SIGTERM: exit $code"
+[ ! -e "$XDG_RUNTIME_DIR/raypoint.sock" ] || fail "socket left behind"
+grep -q "stopping on Terminated" "$work/live.log" || fail "no stop message"
+
+# Bad input: a one-line reason and a non-zero exit.
+"$raypoint" ctl status >/dev/null 2>"$work/err.txt" && fail "ctl without a daemon succeeded"
+grep -q "is the daemon running?" "$work/err.txt" || fail "ctl error: $(cat "$work/err.txt")"
+"$raypoint" run --input "$work/missing.mp4" --no-control 2>"$work/err.txt"
+[ $? -eq 1 ] && grep -q "missing.mp4: cannot open" "$work/err.txt" || fail "missing input: $(cat "$work/err.txt")"
+"$raypoint" run --input "$work/push/video.mp4" --sink bogus 2>"$work/err.txt"
+[ $? -eq 2 ] && grep -q "unknown sink" "$work/err.txt" || fail "bad sink: $(cat "$work/err.txt")"
+"$raypoint" run --camera "$work/video9" --sink null --no-control 2>"$work/err.txt"
+[ $? -eq 1 ] && grep -q "video9" "$work/err.txt" || fail "missing camera: $(cat "$work/err.txt")"
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures failures"
+  exit 1
+fi
+echo "raypoint run: all checks passed"

@@ -1,0 +1,103 @@
+#pragma once
+// Transcript tests for the pointer: one table row a frame, the tracker's result in (time, state,
+// smoothed x and y, sqrt(area)) and the device command out, written as text:
+//   "rel 10 -3"        relative motion (dx, dy), when not zero
+//   "abs 500 250"      absolute position, when there is one
+//   "+left" / "-left"  a button press / release, in order
+//   "wheel 1"          wheel detents, when not zero
+// joined by single spaces in that order; "" is no command at all. A row may also name the click
+// state after the frame ("idle", "pressed", ...; nullptr: not checked).
+
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "raypoint/core/pointer_controller.hpp"
+
+namespace raypoint::test {
+
+using core::TrackerState;
+
+// Shorthands for the tables' state column.
+constexpr TrackerState T = TrackerState::tracking;
+constexpr TrackerState S = TrackerState::searching;
+
+// sqrt(area) of the frame that picks a target: TRACKING, but no area and no position yet.
+constexpr double picked = -1.0;
+
+struct PointerRow {
+    double ms;           // frame time, milliseconds
+    TrackerState state;  // the tracker's state after the frame
+    double x = 0.0;      // smoothed position, fractions of the frame
+    double y = 0.0;
+    double size = 0.0;            // sqrt(area), fraction of the frame; `picked`: unknown
+    const char* click = nullptr;  // expected ClickState (or DwellState) name, or not checked
+    std::string out;              // expected command
+};
+
+inline std::string format(const core::PointerCommand& command) {
+    std::string text;
+    const auto put = [&text](const std::string& part) {
+        if (!text.empty()) text += ' ';
+        text += part;
+    };
+    if (command.dx != 0 || command.dy != 0) {
+        put("rel " + std::to_string(command.dx) + " " + std::to_string(command.dy));
+    }
+    if (command.has_absolute) {
+        put("abs " + std::to_string(command.abs_x) + " " + std::to_string(command.abs_y));
+    }
+    for (const auto& change : command.button_changes()) {
+        put((change.pressed ? "+" : "-") + std::string(core::to_string(change.button)));
+    }
+    if (command.wheel != 0) put("wheel " + std::to_string(command.wheel));
+    return text;
+}
+
+inline core::FrameResult frame_of(const PointerRow& row, std::int64_t index) {
+    core::FrameResult frame;
+    frame.frame = index;
+    frame.timestamp = static_cast<core::Timestamp>(std::llround(row.ms * 1000.0));
+    frame.state = row.state;
+    const bool tracking = row.state == TrackerState::tracking;
+    frame.has_target = tracking;
+    if (tracking && row.size > 0.0) {
+        frame.centroid = {row.x, row.y};
+        frame.inner = frame.centroid;
+        frame.area = row.size * row.size;
+        frame.has_position = true;
+        // z is the tracker's smoothed sqrt(area) change; the pointer reads the raw area.
+        frame.position = {row.x, row.y, 0.0};
+    }
+    return frame;
+}
+
+// Which state name a row's `click` column is checked against.
+enum class Watch { click, dwell };
+
+// Feeds `rows` to `pointer`, checking each command (and state, where the row names one).
+inline std::vector<core::PointerCommand> play(core::PointerController& pointer,
+                                              const std::vector<PointerRow>& rows,
+                                              Watch watch = Watch::click) {
+    std::vector<core::PointerCommand> commands;
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const PointerRow& row = rows[i];
+        SCOPED_TRACE(::testing::Message() << "row " << i << " at " << row.ms << " ms");
+        const core::PointerCommand command =
+            pointer.update(frame_of(row, static_cast<std::int64_t>(i)));
+        EXPECT_EQ(format(command), row.out);
+        if (row.click != nullptr) {
+            const std::string_view state = watch == Watch::click
+                                               ? to_string(pointer.click_machine().state())
+                                               : to_string(pointer.dwell_state());
+            EXPECT_EQ(state, std::string_view(row.click));
+        }
+        commands.push_back(command);
+    }
+    return commands;
+}
+
+}  // namespace raypoint::test

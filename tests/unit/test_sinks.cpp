@@ -1,0 +1,298 @@
+// The pointer's outputs without a kernel: the command-to-events encoding that the uinput device
+// and the file sink share, the file sink's text, and --sink.
+
+#include <linux/input-event-codes.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <filesystem>
+#include <fstream>
+#include <span>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "errors.hpp"
+#include "event_sink.hpp"
+#include "file_sink.hpp"
+#include "pointer_events.hpp"
+#include "sink_factory.hpp"
+#include "uinput_pointer.hpp"
+
+namespace raypoint::daemon {
+namespace {
+
+using core::Button;
+using core::PointerCommand;
+using Events = std::vector<EvdevEvent>;
+
+constexpr DeviceProfile relative{core::PointerMode::relative, 65535};
+constexpr DeviceProfile absolute{core::PointerMode::absolute, 1000};
+
+constexpr EvdevEvent syn{EV_SYN, SYN_REPORT, 0};
+
+Events events(const EventBatch& batch) {
+    return {batch.events().begin(), batch.events().end()};
+}
+
+PointerCommand move(int dx, int dy) {
+    PointerCommand command;
+    command.dx = dx;
+    command.dy = dy;
+    return command;
+}
+
+PointerCommand place(int x, int y) {
+    PointerCommand command;
+    command.has_absolute = true;
+    command.abs_x = x;
+    command.abs_y = y;
+    return command;
+}
+
+PointerCommand change(Button button, bool pressed) {
+    PointerCommand command;
+    command.add(button, pressed);
+    return command;
+}
+
+std::string read_file(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+std::filesystem::path temp_path(const std::string& name) {
+    return std::filesystem::temp_directory_path() /
+           ("raypoint-test-sinks-" + std::to_string(::getpid()) + "-" + name);
+}
+
+TEST(PointerEncoder, RelativeMoveIsOneReport) {
+    PointerEncoder encoder(relative);
+    EXPECT_EQ(events(encoder.encode(move(5, -3))),
+              (Events{{EV_REL, REL_X, 5}, {EV_REL, REL_Y, -3}, syn}));
+}
+
+TEST(PointerEncoder, RelativeDropsZeroAxesAndEmptyReports) {
+    // The kernel drops a zero REL value and a SYN_REPORT with nothing before it.
+    PointerEncoder encoder(relative);
+    EXPECT_EQ(events(encoder.encode(move(0, 7))), (Events{{EV_REL, REL_Y, 7}, syn}));
+    EXPECT_TRUE(encoder.encode(PointerCommand{}).empty());
+}
+
+TEST(PointerEncoder, RelativeIgnoresAbsolutePositions) {
+    PointerEncoder encoder(relative);
+    EXPECT_TRUE(encoder.encode(place(10, 20)).empty());
+}
+
+TEST(PointerEncoder, AbsoluteMoveSendsChangedAxesOnly) {
+    PointerEncoder encoder(absolute);
+    EXPECT_EQ(events(encoder.encode(place(100, 200))),
+              (Events{{EV_ABS, ABS_X, 100}, {EV_ABS, ABS_Y, 200}, syn}));
+    // The same place again: the kernel would drop both values, so nothing at all.
+    EXPECT_TRUE(encoder.encode(place(100, 200)).empty());
+    EXPECT_EQ(events(encoder.encode(place(100, 250))), (Events{{EV_ABS, ABS_Y, 250}, syn}));
+}
+
+TEST(PointerEncoder, AbsoluteStartsAtZeroAndClampsToRange) {
+    PointerEncoder encoder(absolute);
+    EXPECT_EQ(events(encoder.encode(place(0, 5000))), (Events{{EV_ABS, ABS_Y, 1000}, syn}));
+    EXPECT_EQ(events(encoder.encode(place(-4, 1000))), Events{});
+}
+
+TEST(PointerEncoder, AbsoluteIgnoresRelativeMotion) {
+    PointerEncoder encoder(absolute);
+    EXPECT_TRUE(encoder.encode(move(3, 4)).empty());
+}
+
+TEST(PointerEncoder, PressAndReleaseEachGetAReport) {
+    PointerEncoder encoder(relative);
+    EXPECT_EQ(events(encoder.encode(change(Button::left, true))),
+              (Events{{EV_KEY, BTN_LEFT, 1}, syn}));
+    EXPECT_TRUE(encoder.is_down(Button::left));
+    EXPECT_EQ(events(encoder.encode(change(Button::left, false))),
+              (Events{{EV_KEY, BTN_LEFT, 0}, syn}));
+    EXPECT_FALSE(encoder.is_down(Button::left));
+}
+
+TEST(PointerEncoder, ClickInOneCommandComesAfterTheMotion) {
+    // A dwell click: the press and the release need a report between them.
+    PointerEncoder encoder(relative);
+    PointerCommand command = move(-2, 0);
+    command.add(Button::right, true);
+    command.add(Button::right, false);
+    EXPECT_EQ(
+        events(encoder.encode(command)),
+        (Events{
+            {EV_REL, REL_X, -2}, syn, {EV_KEY, BTN_RIGHT, 1}, syn, {EV_KEY, BTN_RIGHT, 0}, syn}));
+}
+
+TEST(PointerEncoder, RepeatedPressOrReleaseIsDropped) {
+    // The kernel passes only key changes, so a second press would not reach a reader.
+    PointerEncoder encoder(relative);
+    EXPECT_TRUE(encoder.encode(change(Button::middle, false)).empty());
+    encoder.encode(change(Button::middle, true));
+    EXPECT_TRUE(encoder.encode(change(Button::middle, true)).empty());
+}
+
+TEST(PointerEncoder, WheelGoesWithTheMotion) {
+    PointerEncoder relative_encoder(relative);
+    PointerCommand command = move(1, 0);
+    command.wheel = -2;
+    EXPECT_EQ(events(relative_encoder.encode(command)),
+              (Events{{EV_REL, REL_X, 1}, {EV_REL, REL_WHEEL, -2}, syn}));
+
+    PointerEncoder absolute_encoder(absolute);
+    PointerCommand scroll;
+    scroll.wheel = 1;
+    EXPECT_EQ(events(absolute_encoder.encode(scroll)), (Events{{EV_REL, REL_WHEEL, 1}, syn}));
+}
+
+TEST(PointerEncoder, ReleaseAllReleasesWhatIsDown) {
+    PointerEncoder encoder(relative);
+    PointerCommand command;
+    command.add(Button::middle, true);
+    command.add(Button::left, true);
+    encoder.encode(command);
+    EXPECT_EQ(events(encoder.release_all()),
+              (Events{{EV_KEY, BTN_LEFT, 0}, syn, {EV_KEY, BTN_MIDDLE, 0}, syn}));
+    EXPECT_FALSE(encoder.is_down(Button::left));
+    EXPECT_FALSE(encoder.is_down(Button::middle));
+    EXPECT_TRUE(encoder.release_all().empty());
+}
+
+TEST(PointerEncoder, FullestCommandFits) {
+    PointerEncoder encoder(relative);
+    PointerCommand command = move(1, 1);
+    command.wheel = 1;
+    for (int i = 0; i < PointerCommand::max_changes; ++i)
+        command.add(Button::left, i % 2 == 0);
+    EXPECT_EQ(encoder.encode(command).size(), EventBatch::capacity);
+}
+
+TEST(FileSink, FormatsOneEventALine) {
+    std::array<char, 64> buffer{};
+    EXPECT_EQ(format_event({EV_KEY, BTN_LEFT, 1}, 5033333, buffer), "5033333 EV_KEY BTN_LEFT 1");
+    EXPECT_EQ(format_event(syn, 0, buffer), "0 EV_SYN SYN_REPORT 0");
+    EXPECT_EQ(format_event({EV_REL, REL_X, -12}, 7, std::span<char>(buffer.data(), 8)), "");
+}
+
+TEST(FileSink, WritesExactlyTheDeviceEvents) {
+    const std::filesystem::path path = temp_path("relative.txt");
+    {
+        FileSink sink(path, relative);
+        EXPECT_EQ(sink.name(), "file:" + path.string());
+        PointerCommand command = move(-12, 4);
+        command.add(Button::left, true);
+        sink.emit(command, 5033333);
+        sink.emit(PointerCommand{}, 5066666);
+        // Flushed per command: a reader sees the press before the sink goes away.
+        EXPECT_EQ(read_file(path),
+                  "5033333 EV_REL REL_X -12\n"
+                  "5033333 EV_REL REL_Y 4\n"
+                  "5033333 EV_SYN SYN_REPORT 0\n"
+                  "5033333 EV_KEY BTN_LEFT 1\n"
+                  "5033333 EV_SYN SYN_REPORT 0\n");
+        sink.emit(change(Button::right, true), 5100000);
+        sink.release_all(5133333);
+        EXPECT_EQ(sink.last_error(), 0);
+    }
+    EXPECT_EQ(read_file(path),
+              "5033333 EV_REL REL_X -12\n"
+              "5033333 EV_REL REL_Y 4\n"
+              "5033333 EV_SYN SYN_REPORT 0\n"
+              "5033333 EV_KEY BTN_LEFT 1\n"
+              "5033333 EV_SYN SYN_REPORT 0\n"
+              "5100000 EV_KEY BTN_RIGHT 1\n"
+              "5100000 EV_SYN SYN_REPORT 0\n"
+              "5133333 EV_KEY BTN_LEFT 0\n"
+              "5133333 EV_SYN SYN_REPORT 0\n"
+              "5133333 EV_KEY BTN_RIGHT 0\n"
+              "5133333 EV_SYN SYN_REPORT 0\n");
+    std::filesystem::remove(path);
+}
+
+TEST(FileSink, ReleasesButtonsDownWhenDestroyed) {
+    // As the kernel does when a uinput device is destroyed with a key down.
+    const std::filesystem::path path = temp_path("absolute.txt");
+    {
+        FileSink sink(path, absolute);
+        PointerCommand command = place(500, 400);
+        command.add(Button::left, true);
+        sink.emit(command, 1000);
+    }
+    EXPECT_EQ(read_file(path),
+              "1000 EV_ABS ABS_X 500\n"
+              "1000 EV_ABS ABS_Y 400\n"
+              "1000 EV_SYN SYN_REPORT 0\n"
+              "1000 EV_KEY BTN_LEFT 1\n"
+              "1000 EV_SYN SYN_REPORT 0\n"
+              "1000 EV_KEY BTN_LEFT 0\n"
+              "1000 EV_SYN SYN_REPORT 0\n");
+    std::filesystem::remove(path);
+}
+
+TEST(FileSink, UnwritablePathThrowsNamingIt) {
+    const std::filesystem::path path = temp_path("no-such-dir") / "events.txt";
+    try {
+        FileSink sink(path, relative);
+        FAIL() << "no exception";
+    } catch (const OutputError& error) {
+        const std::string message = error.what();
+        EXPECT_NE(message.find(path.string()), std::string::npos) << message;
+        EXPECT_NE(message.find("No such file or directory"), std::string::npos) << message;
+    }
+}
+
+TEST(SinkFactory, ParsesTheThreeForms) {
+    EXPECT_EQ(parse_sink_spec("uinput").kind, SinkKind::uinput);
+    EXPECT_EQ(parse_sink_spec("null").kind, SinkKind::null);
+    const SinkSpec file = parse_sink_spec("file:/tmp/a b.txt");
+    EXPECT_EQ(file.kind, SinkKind::file);
+    EXPECT_EQ(file.path, std::filesystem::path("/tmp/a b.txt"));
+}
+
+TEST(SinkFactory, UnknownSinkListsTheAllowedOnes) {
+    for (const char* value : {"foo", "", "file:", "Uinput", "file"}) {
+        try {
+            parse_sink_spec(value);
+            FAIL() << "accepted --sink " << value;
+        } catch (const UsageError& error) {
+            const std::string message = error.what();
+            EXPECT_NE(message.find("--sink"), std::string::npos) << message;
+            EXPECT_NE(message.find("file:"), std::string::npos) << message;
+        }
+    }
+    try {
+        parse_sink_spec("foo");
+    } catch (const UsageError& error) {
+        EXPECT_STREQ(error.what(), "--sink foo: unknown sink; use uinput, file:PATH or null");
+    }
+}
+
+TEST(SinkFactory, MakesNullAndFileSinks) {
+    EXPECT_EQ(make_sink(parse_sink_spec("null"), relative)->name(), "null");
+    const std::filesystem::path path = temp_path("factory.txt");
+    EXPECT_EQ(make_sink(SinkSpec{SinkKind::file, path}, relative)->name(), "file:" + path.string());
+    std::filesystem::remove(path);
+}
+
+TEST(UinputError, SaysWhatToDo) {
+    const std::string denied = UinputError("libevdev_uinput_create_from_device", EACCES).what();
+    EXPECT_EQ(denied,
+              "libevdev_uinput_create_from_device on /dev/uinput: Permission denied; add the udev "
+              "rule packaging/70-raypoint-uinput.rules (TAG+=\"uaccess\") or join the group that "
+              "owns /dev/uinput");
+    const std::string missing = UinputError("libevdev_uinput_create_from_device", ENOENT).what();
+    EXPECT_EQ(missing,
+              "libevdev_uinput_create_from_device on /dev/uinput: No such file or directory; load "
+              "the module: sudo modprobe uinput (packaging installs modules-load.d/raypoint.conf)");
+    EXPECT_EQ(UinputError("libevdev_new", ENOMEM).error(), ENOMEM);
+}
+
+}  // namespace
+}  // namespace raypoint::daemon
