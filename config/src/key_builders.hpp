@@ -71,6 +71,22 @@ Key boolean_key(std::string_view section, std::string_view name, std::string_vie
     return key;
 }
 
+// A device path: `auto` or an absolute path under /dev (/dev/video0, /dev/v4l/by-id/...).
+template <typename Access>
+Key device_key(std::string_view section, std::string_view name, std::string_view doc,
+               Access access) {
+    Key key{section, name, ValueType::device, 0, 0, {}, doc, nullptr, nullptr};
+    key.format = [access](const Config& c) { return access(c); };
+    key.parse = [access](Config& c, std::string_view text) -> std::optional<std::string> {
+        const bool path = text.size() > 5 && text.substr(0, 5) == "/dev/" &&
+                          text.find_first_of(" \t") == std::string_view::npos;
+        if (text != "auto" && !path) return "not a device";
+        access(c) = std::string(text);
+        return std::nullopt;
+    };
+    return key;
+}
+
 // `names` lists each enumerator's text, in any order.
 template <typename Enum, typename Access>
 Key choice_key(std::string_view section, std::string_view name, std::string_view doc,

@@ -44,6 +44,8 @@ std::string Key::allowed() const {
                    std::to_string(static_cast<long long>(max));
         case ValueType::real:
             return detail::format_real(min) + ".." + detail::format_real(max);
+        case ValueType::device:
+            return "auto|/dev/...";
         case ValueType::boolean:
         case ValueType::choice: {
             std::string text;

@@ -11,6 +11,7 @@ using core::SearchWeighting;
 using core::SmoothingKind;
 using detail::boolean_key;
 using detail::choice_key;
+using detail::device_key;
 using detail::integer_key;
 using detail::real_key;
 
@@ -244,6 +245,15 @@ const std::vector<Key>& schema() {
             "safety", "min_tracking_seconds", 0.0, 600.0,
             "no click until the target has been tracked this many seconds",
             [](auto& c) -> auto& { return c.core.pointer.safety.min_tracking_seconds; }),
+        // [camera] the daemon's webcam (issue: capture)
+        device_key(
+            "camera", "device",
+            "the webcam: auto (the first that streams), /dev/videoN or /dev/v4l/by-id/...",
+            [](auto& c) -> auto& { return c.camera.device; }),
+        boolean_key(
+            "camera", "lock_exposure",
+            "lock auto exposure, gain and white balance, so brightness cannot jump",
+            [](auto& c) -> auto& { return c.camera.lock_exposure; }),
     };
     return keys;
 }

@@ -20,8 +20,8 @@ namespace {
 struct RunOptions {
     std::string input;  // a recorded video instead of the camera
     bool paced = true;
-    std::string camera = "auto";
-    bool lock_exposure = false;
+    std::optional<std::string> camera;  // overrides camera.device
+    bool lock_exposure = false;         // or camera.lock_exposure
     std::string sink = "uinput";
     std::optional<std::string> control_path;
     bool no_control = false;
@@ -75,9 +75,9 @@ int run_command(std::span<const std::string_view> args) {
         parts.stop_at_end_of_input = true;
     } else {
         CameraOptions camera;
-        camera.device = options.camera;
+        camera.device = options.camera ? *options.camera : parts.config.camera.device;
         camera.working = cv::Size(preprocess.work_width, preprocess.work_height);
-        camera.lock_exposure = options.lock_exposure;
+        camera.lock_exposure = options.lock_exposure || parts.config.camera.lock_exposure;
         parts.source = std::make_unique<V4l2Camera>(camera);
     }
     parts.sink =

@@ -51,6 +51,8 @@ std::string other_value(const Key& key) {
         }
         case ValueType::boolean:
             return current == "true" ? "false" : "true";
+        case ValueType::device:
+            return current == "auto" ? "/dev/video0" : "auto";
         case ValueType::choice:
             for (const auto choice : key.choices) {
                 if (choice != current) return std::string(choice);

@@ -158,6 +158,8 @@ TEST(IniFiles, PrintConfigOutputRoundTrips) {
                               key.type == ValueType::integer ? std::floor(value) : value);
                 candidates.emplace_back(text);
             }
+        } else if (key.type == ValueType::device) {
+            candidates = {"/dev/video2", "auto"};
         } else {
             candidates.assign(key.choices.begin(), key.choices.end());
         }

@@ -45,6 +45,8 @@ std::string type_reason(const Key& key) {
             return "not a boolean";
         case ValueType::choice:
             return "unknown value";
+        case ValueType::device:
+            return "not a device";
     }
     return {};
 }

@@ -14,7 +14,8 @@
 
 namespace raypoint::config {
 
-enum class ValueType { integer, real, boolean, choice };
+// device: `auto` or a path under /dev (a camera).
+enum class ValueType { integer, real, boolean, choice, device };
 
 struct Key {
     std::string_view section;
