@@ -9,6 +9,7 @@
 #include "compare_command.hpp"
 #include "config_commands.hpp"
 #include "demo_command.hpp"
+#include "doctor_command.hpp"
 #include "errors.hpp"
 #include "raypoint/config/ini_file.hpp"
 #include "run_command.hpp"
@@ -32,6 +33,8 @@ commands:
                    releasing every button.
   ctl pause|resume|recenter|status
                    talk to the running daemon (--control PATH as for run)
+  doctor           check the configuration, the webcam, /dev/uinput and the
+                   service, and print the fix for each failure
   track INPUT      track a recorded video or image sequence ("frames/%04d.png"),
                    one line a frame on stdout
       --format jsonl|csv     output format (default jsonl)
@@ -71,6 +74,7 @@ int main(int argc, char** argv) {
     try {
         if (command == "run") return raypoint::daemon::run_command(args);
         if (command == "ctl") return raypoint::daemon::ctl_command(args);
+        if (command == "doctor") return raypoint::daemon::doctor_command(args);
         if (command == "track") return raypoint::daemon::track_command(args);
         if (command == "demo") return raypoint::daemon::demo_command(args);
         if (command == "compare-estimators") return raypoint::daemon::compare_command(args);

@@ -43,11 +43,18 @@ sleep 1
 "$raypoint" ctl status > "$work/status.txt" || fail "ctl status exited $?"
 grep -q '^state: ' "$work/status.txt" || fail "status: $(cat "$work/status.txt")"
 grep -q '^paused: no' "$work/status.txt" || fail "status before pause: $(cat "$work/status.txt")"
+"$raypoint" doctor > "$work/doctor.txt"
+grep -q '^ok   service  raypoint run answers on ' "$work/doctor.txt" || fail "doctor: $(cat "$work/doctor.txt")"
+grep -q '^ok   config ' "$work/doctor.txt" || fail "doctor config: $(cat "$work/doctor.txt")"
 [ "$("$raypoint" ctl pause)" = "paused" ] || fail "ctl pause"
 "$raypoint" ctl status | grep -q '^paused: yes' || fail "status after pause"
 [ "$("$raypoint" ctl resume)" = "resumed" ] || fail "ctl resume"
 echo "[tracking]
 min_area = 7" > "$XDG_CONFIG_HOME/raypoint/raypoint.ini"
+"$raypoint" doctor > "$work/doctor.txt" && fail "doctor passed with a broken file"
+grep -q '^FAIL config .*raypoint.ini has 1 error(s), the first: .*raypoint.ini:2: \[tracking\] min_area' "$work/doctor.txt" ||
+  fail "doctor on a broken file: $(cat "$work/doctor.txt")"
+grep -q 'fix: raypoint check-config lists them all' "$work/doctor.txt" || fail "doctor gave no fix"
 kill -HUP "$daemon_pid"
 sleep 0.5
 kill -0 "$daemon_pid" 2>/dev/null || fail "the daemon died on a reload with a broken file"
@@ -64,6 +71,11 @@ daemon_pid=""
 [ "$code" -eq 0 ] || fail "SIGTERM: exit $code"
 [ ! -e "$XDG_RUNTIME_DIR/raypoint.sock" ] || fail "socket left behind"
 grep -q "stopping on Terminated" "$work/live.log" || fail "no stop message"
+
+# doctor without a daemon: the service check fails with its fix.
+"$raypoint" doctor > "$work/doctor.txt" && fail "doctor passed without a daemon"
+grep -q '^FAIL service  raypoint run is not running' "$work/doctor.txt" || fail "doctor: $(cat "$work/doctor.txt")"
+grep -q 'fix: systemctl --user enable --now raypoint' "$work/doctor.txt" || fail "doctor: no service fix"
 
 # Bad input: a one-line reason and a non-zero exit.
 "$raypoint" ctl status >/dev/null 2>"$work/err.txt" && fail "ctl without a daemon succeeded"
