@@ -69,6 +69,7 @@ Preprocessor::Preprocessor(const PreprocessSettings& settings) : settings_(setti
         gray_[i].setTo(cv::Scalar::all(0));
     }
     squared_channels_.resize(static_cast<std::size_t>(settings.work_width) * 3);
+    strongest_.resize(static_cast<std::size_t>(settings.work_width));
     magnitude_.create(size, CV_8U);
     edges_.create(size, CV_8U);
     difference_.create(size, CV_8U);
@@ -361,42 +362,66 @@ void Preprocessor::store_yuyv_clamped(int x, Store& store) const noexcept {
 // max_channel the strongest channel's, which keeps a skin hand's outline over a background of
 // equal brightness. Written out rather than cv::Sobel, which allocates its filter every call.
 void Preprocessor::compute_edges() noexcept {
-    const bool per_channel = settings_.edge_source == EdgeSource::max_channel;
-    const cv::Mat& source = per_channel ? color_[current_] : gray_[current_];
-    const int channels = per_channel ? 3 : 1;
+    switch (settings_.edge_source) {
+        case EdgeSource::luma:
+            compute_edges_of<1>(gray_[current_]);
+            break;
+        case EdgeSource::max_channel:
+            compute_edges_of<3>(color_[current_]);
+            break;
+    }
+}
+
+// Squared gradients of one row's samples, all channels interleaved; the border columns repeat
+// their neighbour. Restrict-qualified and with the channel stride a constant, so the compiler
+// vectorizes it.
+template <int Channels>
+static void squared_gradients(const std::uint8_t* __restrict above,
+                              const std::uint8_t* __restrict here,
+                              const std::uint8_t* __restrict below, int* __restrict out,
+                              int row_length) noexcept {
+    const auto gradient = [&](int i, int left, int right) {
+        const int gx = (above[right] + 2 * here[right] + below[right]) -
+                       (above[left] + 2 * here[left] + below[left]);
+        const int gy = (below[left] + 2 * below[i] + below[right]) -
+                       (above[left] + 2 * above[i] + above[right]);
+        return gx * gx + gy * gy;
+    };
+    for (int i = 0; i < Channels; ++i) {
+        out[i] = gradient(i, i, i + Channels);
+        const int last = row_length - Channels + i;
+        out[last] = gradient(last, last - Channels, last);
+    }
+    for (int i = Channels; i < row_length - Channels; ++i) {
+        const int gx = (above[i + Channels] + 2 * here[i + Channels] + below[i + Channels]) -
+                       (above[i - Channels] + 2 * here[i - Channels] + below[i - Channels]);
+        const int gy = (below[i - Channels] + 2 * below[i] + below[i + Channels]) -
+                       (above[i - Channels] + 2 * above[i] + above[i + Channels]);
+        out[i] = gx * gx + gy * gy;
+    }
+}
+
+template <int Channels>
+void Preprocessor::compute_edges_of(const cv::Mat& source) noexcept {
     const int width = source.cols;
     const int height = source.rows;
-    const int row_length = width * channels;
     const int threshold = settings_.edge_threshold;
+    int* const squared = squared_channels_.data();
+    float* const strongest = strongest_.data();
     for (int y = 0; y < height; ++y) {
-        const std::uint8_t* above = source.ptr<std::uint8_t>(std::max(y - 1, 0));
-        const std::uint8_t* here = source.ptr<std::uint8_t>(y);
-        const std::uint8_t* below = source.ptr<std::uint8_t>(std::min(y + 1, height - 1));
-        // Squared gradient of every channel sample; the border columns repeat their neighbour.
-        const auto gradient = [&](int i, int left, int right) {
-            const int gx = (above[right] + 2 * here[right] + below[right]) -
-                           (above[left] + 2 * here[left] + below[left]);
-            const int gy = (below[left] + 2 * below[i] + below[right]) -
-                           (above[left] + 2 * above[i] + above[right]);
-            return gx * gx + gy * gy;
-        };
-        for (int i = 0; i < channels; ++i) {
-            squared_channels_[i] = gradient(i, i, i + channels);
-            const int last = row_length - channels + i;
-            squared_channels_[last] = gradient(last, last - channels, last);
-        }
-        for (int i = channels; i < row_length - channels; ++i) {
-            squared_channels_[i] = gradient(i, i - channels, i + channels);
+        squared_gradients<Channels>(
+            source.ptr<std::uint8_t>(std::max(y - 1, 0)), source.ptr<std::uint8_t>(y),
+            source.ptr<std::uint8_t>(std::min(y + 1, height - 1)), squared, width * Channels);
+        for (int x = 0; x < width; ++x) {
+            int value = squared[x * Channels];
+            for (int c = 1; c < Channels; ++c)
+                value = std::max(value, squared[x * Channels + c]);
+            strongest[x] = static_cast<float>(value);
         }
         auto* magnitude = magnitude_.ptr<std::uint8_t>(y);
         auto* edge = edges_.ptr<std::uint8_t>(y);
         for (int x = 0; x < width; ++x) {
-            int strongest = squared_channels_[x * channels];
-            for (int c = 1; c < channels; ++c) {
-                strongest = std::max(strongest, squared_channels_[x * channels + c]);
-            }
-            const int value =
-                static_cast<int>(std::min(255.0F, std::sqrt(static_cast<float>(strongest))));
+            const int value = static_cast<int>(std::min(255.0F, std::sqrt(strongest[x])));
             magnitude[x] = static_cast<std::uint8_t>(value);
             // Edge pixels keep their magnitude: the raster estimator climbs it to the ridge.
             edge[x] = value > threshold ? static_cast<std::uint8_t>(value) : 0;

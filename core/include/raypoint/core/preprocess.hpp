@@ -53,6 +53,8 @@ class Preprocessor {
     void store_yuyv_clamped(int x, Store& store) const noexcept;
     void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
     void compute_edges() noexcept;
+    template <int Channels>
+    void compute_edges_of(const cv::Mat& source) noexcept;
     void compute_difference() noexcept;
     double compensate(cv::Mat& difference) noexcept;
 
@@ -75,6 +77,7 @@ class Preprocessor {
     int interior_end_ = 0;
     std::vector<const std::uint8_t*> tap_row_pointers_;
     std::vector<int> squared_channels_;  // one row of squared Sobel magnitudes, per channel
+    std::vector<float> strongest_;       // one row: the strongest channel's
     std::vector<int> last_tap_row_;  // per working row, the lowest input row a tap reads  // one
                                      // row of squared Sobel magnitudes
     std::array<cv::Mat, 2> color_;
