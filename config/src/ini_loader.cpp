@@ -78,7 +78,7 @@ Config config_from_file(const IniFile& file, std::optional<std::string_view> pre
 Config load_config(const std::filesystem::path& path, std::optional<std::string_view> preset) {
     const IniFile file = read_ini_file(path);
     std::vector<std::string> errors = file.errors;
-    const Config config = config_from_file(file, preset, errors);
+    Config config = config_from_file(file, preset, errors);
     // Cross-checks of a half-applied file would blame keys that are fine.
     if (errors.empty()) {
         for (const auto& problem : cross_check(config))
