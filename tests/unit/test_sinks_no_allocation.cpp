@@ -1,8 +1,7 @@
-// The per-frame path of the sinks does not allocate (event_sink.hpp): global operator new is
-// replaced by a counting version for the test_sinks executable; it counts only while `counting`
-// is set. stdio's own buffer is malloc'd, not new'd: FileSink hands stdio a buffer up front.
+// The per-frame path of the sinks does not allocate (event_sink.hpp), counted by the replaced
+// global operator new of tests/support/allocation_counter.cpp. stdio's own buffer is malloc'd, not
+// new'd: FileSink hands stdio a buffer up front.
 
-#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <new>
@@ -10,56 +9,18 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
 #include <unistd.h>
+#include "allocation_counter.hpp"
 
 #include "event_sink.hpp"
 #include "file_sink.hpp"
 #include "pointer_events.hpp"
 
-namespace {
-
-std::atomic<bool> counting{false};
-std::atomic<long> allocations{0};
-
-void* allocate(std::size_t size) {
-    if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
-    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-    throw std::bad_alloc();
-}
-
-}  // namespace
-
-// The nothrow forms call these in libstdc++; the aligned forms keep their own matching pair.
-void* operator new(std::size_t size) {
-    return allocate(size);
-}
-void* operator new[](std::size_t size) {
-    return allocate(size);
-}
-void operator delete(void* p) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p) noexcept {
-    std::free(p);
-}
-void operator delete(void* p, std::size_t) noexcept {
-    std::free(p);
-}
-void operator delete[](void* p, std::size_t) noexcept {
-    std::free(p);
-}
-
 namespace raypoint::daemon {
 namespace {
 
-template <typename Work>
-long allocations_during(Work&& work) {
-    allocations = 0;
-    counting = true;
-    work();
-    counting = false;
-    return allocations.load();
-}
+using raypoint::test::allocations_during;
 
 core::PointerCommand busy_command(int i) {
     core::PointerCommand command;
