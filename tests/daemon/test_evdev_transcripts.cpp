@@ -71,7 +71,9 @@ void play(core::PointerMode mode, const std::vector<Row>& rows) {
             frame.position = {row.x, row.y, 0.0};
         }
         std::vector<std::string> got;
-        for (const auto& event : encoder.encode(pointer.update(frame)).events()) {
+        // The batch must outlive the loop: events() is a view into it.
+        const EventBatch batch = encoder.encode(pointer.update(frame));
+        for (const auto& event : batch.events()) {
             got.push_back(text(event));
         }
         EXPECT_EQ(got, row.events) << "at " << row.ms << " ms";
