@@ -22,11 +22,8 @@ constexpr double aspect = 4.0 / 3.0;
 // A dead zone of 0.1 widths/s (0.01 a frame) keeps the small moves below out of the output,
 // so the out column shows the clicks; 0.0304 a frame gives (0.0304 - 0.01) x 1000 = 20.4 px.
 PointerSettings dwell() {
-    PointerSettings s;
-    s.motion.mode = PointerMode::relative;
-    s.motion.gain = 1000.0;
+    PointerSettings s = test::linear_pointer();
     s.motion.dead_zone = 0.1;
-    s.motion.acceleration = 0.0;
     s.click.mode = ClickMode::dwell;
     s.dwell.seconds = 1.0;
     s.dwell.radius = 0.015;

@@ -20,12 +20,7 @@ using test::T;
 constexpr double aspect = 4.0 / 3.0;
 
 PointerSettings depth() {
-    PointerSettings s;
-    s.motion.mode = PointerMode::relative;
-    s.motion.mirror = true;
-    s.motion.gain = 1000.0;
-    s.motion.dead_zone = 0.0;
-    s.motion.acceleration = 0.0;
+    PointerSettings s = test::linear_pointer();
     s.click.mode = ClickMode::depth;
     s.click.start_rise = 0.05;
     s.click.press_rise = 0.20;

@@ -19,12 +19,7 @@ constexpr double aspect = 4.0 / 3.0;
 
 // Relative, 1000 px a frame width, no dead zone, no acceleration, no clicks.
 PointerSettings plain() {
-    PointerSettings s;
-    s.motion.mode = PointerMode::relative;
-    s.motion.mirror = true;
-    s.motion.gain = 1000.0;
-    s.motion.dead_zone = 0.0;
-    s.motion.acceleration = 0.0;
+    PointerSettings s = test::linear_pointer();
     s.click.mode = ClickMode::off;
     return s;
 }

@@ -28,6 +28,19 @@ constexpr TrackerState S = TrackerState::searching;
 // sqrt(area) of the frame that picks a target: TRACKING, but no area and no position yet.
 constexpr double picked = -1.0;
 
+// The transcripts' pointer before each file's own settings: relative, mirrored, 1000 device
+// pixels a frame width, no dead zone and no acceleration, so the out column is hand motion
+// times 1000.
+inline core::PointerSettings linear_pointer() {
+    core::PointerSettings s;
+    s.motion.mode = core::PointerMode::relative;
+    s.motion.mirror = true;
+    s.motion.gain = 1000.0;
+    s.motion.dead_zone = 0.0;
+    s.motion.acceleration = 0.0;
+    return s;
+}
+
 struct PointerRow {
     double ms;           // frame time, milliseconds
     TrackerState state;  // the tracker's state after the frame
