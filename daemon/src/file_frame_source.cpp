@@ -37,6 +37,9 @@ Capture FileFrameSource::next(int timeout_ms) {
             std::this_thread::sleep_for(std::min<std::chrono::steady_clock::duration>(
                 due - now, std::chrono::milliseconds(std::max(timeout_ms, 0) + 1000)));
         }
+        // steady_clock is CLOCK_MONOTONIC (libstdc++ on Linux), the clock of the latencies.
+        capture.ready =
+            std::chrono::duration_cast<std::chrono::microseconds>(due.time_since_epoch()).count();
     }
     const cv::Mat& bgr = current_->bgr;
     capture.status = CaptureStatus::frame;

@@ -21,6 +21,9 @@ struct Capture {
     // pixels may be the driver's own buffer, handed back to it on the next call.
     core::FrameView frame;
     std::string reason;  // when lost: the failing call and errno text, for the log
+    // When the frame was ready, microseconds on CLOCK_MONOTONIC (a V4L2 buffer's timestamp, a
+    // replayed frame's due time), for the latency to the output; negative when unknown.
+    core::Timestamp ready = -1;
 };
 
 class FrameSource {
@@ -31,6 +34,11 @@ class FrameSource {
     // next frame. Frame timestamps are in
     // microseconds on CLOCK_MONOTONIC, increasing.
     virtual Capture next(int timeout_ms) = 0;
+
+    // A descriptor that polls readable (POLLIN, or POLLERR when the device fails) when next(0)
+    // has something to report, so the loop can wait for frames, signals and control requests in
+    // one poll(2). -1: the source has none; the loop calls next() with a timeout instead.
+    virtual int wait_fd() const noexcept { return -1; }
 
     // Gives the device back (stops streaming, frees buffers, closes it); next() then reports
     // lost until reopen(). Safe to call twice.

@@ -26,6 +26,10 @@ commands:
       --lock-exposure        lock auto exposure, gain and white balance
       --input FILE           a recorded video instead of the camera, at its own pace
       --unpaced              with --input: as fast as the core runs
+      --realtime             with --input: decode the clip first, then replay it from
+                             memory as a YUYV camera would deliver it (the daemon's
+                             own cost, printed at exit and in ctl status)
+      --duration SECONDS     stop after SECONDS (with --realtime the clip loops)
       --sink SPEC            uinput (default), file:PATH (the events as text), null
       --control PATH         control socket (default $XDG_RUNTIME_DIR/raypoint.sock)
       --no-control           no control socket

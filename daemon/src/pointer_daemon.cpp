@@ -1,13 +1,17 @@
 #include "pointer_daemon.hpp"
 
+#include <poll.h>
 #include <pthread.h>
 #include <signal.h>
 #include <sys/signalfd.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "log.hpp"
@@ -20,6 +24,9 @@ using Clock = RunStatistics::Clock;
 // The camera comes back within 2 s of being plugged in again (the promise).
 constexpr auto reopen_interval = std::chrono::milliseconds(500);
 constexpr int frame_timeout_ms = 100;
+// Without frames the loop still wakes once a second, so that STATUS= and `ctl status` show the
+// frame rate falling to 0 when a camera stalls.
+constexpr auto idle_wake = std::chrono::seconds(1);
 
 std::string format_status(const char* format, double a, double b) {
     char buffer[128];
@@ -60,10 +67,18 @@ int PointerDaemon::run() {
               std::string(parts_.sink->name()));
     notifier_.ready();
     notifier_.status("initializing");
+    const auto started = Clock::now();
+    statistics_.start(started);
+    if (parts_.duration) stop_at_ = started + *parts_.duration;
+    unsigned ready = signal_ready | control_ready;  // both looked at before the first wait
     for (;;) {
-        if (!handle_signals()) break;
-        handle_control();
+        if ((ready & signal_ready) != 0 && !handle_signals()) break;
+        if ((ready & control_ready) != 0) handle_control();
         const auto now = Clock::now();
+        if (now >= stop_at_) {
+            log::info("stopping: --duration reached");
+            break;
+        }
         if (camera_lost_) {
             if (parts_.stop_at_end_of_input) break;
             // Alive and handling it: keep the watchdog fed while the camera is away.
@@ -75,13 +90,23 @@ int PointerDaemon::run() {
                     log::info("camera back: " + parts_.source->description());
                 }
             }
-            usleep(50'000);
+            ready = camera_lost_ ? wait_for_events(-1, std::min(next_reopen_, stop_at_))
+                                 : signal_ready | control_ready;
             continue;
         }
-        const Capture capture = parts_.source->next(frame_timeout_ms);
+        Capture capture;
+        if (const int fd = parts_.source->wait_fd(); fd >= 0) {
+            ready = wait_for_events(fd, std::min(now + idle_wake, stop_at_));
+            if ((ready & source_ready) != 0) capture = parts_.source->next(0);
+        } else {
+            // A source without a descriptor (a decoded video) waits inside next(); signals and
+            // requests are looked at between its frames.
+            ready = signal_ready | control_ready;
+            capture = parts_.source->next(frame_timeout_ms);
+        }
         switch (capture.status) {
             case CaptureStatus::frame:
-                on_frame(capture.frame);
+                on_frame(capture);
                 // Only frames feed the watchdog: a stalled camera gets the service restarted.
                 if (notifier_.watchdog_due(now)) notifier_.pet(now);
                 break;
@@ -96,10 +121,34 @@ int PointerDaemon::run() {
     release_buttons();
     notifier_.stopping();
     log::info("stopped after " + std::to_string(statistics_.frames()) + " frames");
+    log_cost();
     return 0;
 }
 
-void PointerDaemon::on_frame(const core::FrameView& frame) {
+unsigned PointerDaemon::wait_for_events(int source_fd, Clock::time_point deadline) const noexcept {
+    std::array<pollfd, 3> fds{};
+    std::size_t count = 0;
+    fds[count++] = pollfd{signal_fd_, POLLIN, 0};
+    const std::size_t control = parts_.control ? count++ : fds.size();
+    if (control < fds.size()) fds[control] = pollfd{parts_.control->fd(), POLLIN, 0};
+    const std::size_t source = source_fd >= 0 ? count++ : fds.size();
+    if (source < fds.size()) fds[source] = pollfd{source_fd, POLLIN, 0};
+    // Rounded up: woken before the deadline, the loop would only go back to sleep.
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+    const auto timeout_ms = static_cast<int>(std::clamp<std::chrono::milliseconds::rep>(
+        left.count(), 0, std::numeric_limits<int>::max()));
+    if (poll(fds.data(), count, timeout_ms) <= 0) return 0;  // the deadline, or EINTR
+    unsigned ready = 0;
+    // Any event counts: POLLERR or POLLHUP from a camera is its loss, for next() to report.
+    if (fds[0].revents != 0) ready |= signal_ready;
+    if (control < fds.size() && fds[control].revents != 0) ready |= control_ready;
+    if (source < fds.size() && fds[source].revents != 0) ready |= source_ready;
+    return ready;
+}
+
+void PointerDaemon::on_frame(const Capture& capture) {
+    const core::Timestamp handed = monotonic_now_us();
+    const core::FrameView& frame = capture.frame;
     core::FrameResult result = tracker_->process(frame);
     last_timestamp_ = frame.timestamp;
     last_result_ = result;
@@ -114,6 +163,8 @@ void PointerDaemon::on_frame(const core::FrameView& frame) {
     result.position.y += recenter_offset_.y;
     result.centroid += recenter_offset_;
     parts_.sink->emit(pointer_->update(result), frame.timestamp);
+    // After the write returned: uinput's write(2) of the events, the file sink's fflush.
+    statistics_.record_latency(capture.ready, handed, monotonic_now_us());
 }
 
 void PointerDaemon::on_lost(const std::string& reason) {
@@ -200,6 +251,8 @@ void PointerDaemon::handle_control() {
 
 void PointerDaemon::report(Clock::time_point now) {
     if (!statistics_.update(now)) return;
+    // The STATUS= line costs a few allocations a second; outside systemd it has no reader.
+    if (!notifier_.enabled()) return;
     std::string state =
         camera_lost_ ? "camera lost" : std::string(core::to_string(last_result_.state));
     if (paused_) state += " (paused)";
@@ -217,6 +270,7 @@ std::string PointerDaemon::status_text() const {
                           statistics_.cpu_percent());
     text += "frames: " + std::to_string(statistics_.frames()) + "\n";
     text += "camera losses: " + std::to_string(lost_count_) + "\n";
+    text += statistics_.cost_text(Clock::now());
     if (last_result_.has_position) {
         char position[96];
         std::snprintf(position, sizeof position, "position: %.3f %.3f %.3f\n",
@@ -224,6 +278,19 @@ std::string PointerDaemon::status_text() const {
         text += position;
     }
     return text;
+}
+
+void PointerDaemon::log_cost() const {
+    // One block, a line a log entry: what the run cost (run_statistics.hpp says what each
+    // figure counts) and where the frames came from, which says whether capture is in it.
+    log::info("cost of this run:");
+    const std::string text = statistics_.cost_text(Clock::now());
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t end = text.find('\n', start);
+        log::info("  " + text.substr(start, end - start));
+        start = end == std::string::npos ? text.size() : end + 1;
+    }
+    log::info("  source: " + parts_.source->description());
 }
 
 }  // namespace raypoint::daemon

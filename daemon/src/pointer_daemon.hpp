@@ -6,6 +6,7 @@
 
 #include <signal.h>
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -32,6 +33,8 @@ struct DaemonParts {
     std::unique_ptr<EventSink> sink;
     std::unique_ptr<ControlServer> control;  // null: no control socket
     bool stop_at_end_of_input = false;       // a recorded video: exit when it ends
+    // --duration: stop after this long (measuring the daemon's cost over a fixed time).
+    std::optional<std::chrono::milliseconds> duration;
     // SIGHUP: the new configuration, or throws config::ConfigError to keep the running one.
     std::function<config::Config()> reload;
 };
@@ -43,11 +46,19 @@ class PointerDaemon {
     PointerDaemon(const PointerDaemon&) = delete;
     PointerDaemon& operator=(const PointerDaemon&) = delete;
 
-    // Runs until SIGINT or SIGTERM (or the end of a recorded input). Returns the exit code.
+    // Runs until SIGINT or SIGTERM (or the end of a recorded input, or the duration). Prints the
+    // run's cost (run_statistics.hpp) to stderr at the end. Returns the exit code.
     int run();
 
   private:
-    void on_frame(const core::FrameView& frame);
+    // What woke wait_for_events(): bits of these.
+    enum Ready : unsigned { source_ready = 1U, signal_ready = 2U, control_ready = 4U };
+
+    // Sleeps in one poll(2) on the signalfd, the control socket and `source_fd` (if >= 0) until
+    // one is readable or `deadline`. The loop's only sleep: no wake-up without work.
+    unsigned wait_for_events(int source_fd,
+                             RunStatistics::Clock::time_point deadline) const noexcept;
+    void on_frame(const Capture& capture);
     void on_lost(const std::string& reason);
     bool handle_signals();  // false: stop
     void handle_control();
@@ -55,6 +66,7 @@ class PointerDaemon {
     void release_buttons();
     void report(RunStatistics::Clock::time_point now);
     std::string status_text() const;
+    void log_cost() const;
 
     DaemonParts parts_;
     std::unique_ptr<core::Tracker> tracker_;
@@ -66,6 +78,7 @@ class PointerDaemon {
     bool camera_lost_ = false;
     std::string lost_reason_;
     RunStatistics::Clock::time_point next_reopen_{};
+    RunStatistics::Clock::time_point stop_at_ = RunStatistics::Clock::time_point::max();
     core::Timestamp last_timestamp_ = 0;
     core::FrameResult last_result_{};
     cv::Point2d recenter_offset_{0.0, 0.0};

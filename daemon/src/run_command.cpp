@@ -1,15 +1,19 @@
 #include "run_command.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
+#include "clip_loader.hpp"
 #include "errors.hpp"
 #include "file_frame_source.hpp"
 #include "log.hpp"
 #include "pointer_daemon.hpp"
 #include "pointer_events.hpp"
 #include "raypoint/config/config_paths.hpp"
+#include "realtime_source.hpp"
 #include "settings_options.hpp"
 #include "sink_factory.hpp"
 #include "v4l2_camera.hpp"
@@ -20,12 +24,25 @@ namespace {
 struct RunOptions {
     std::string input;  // a recorded video instead of the camera
     bool paced = true;
+    bool realtime = false;  // --input decoded up front, replayed as a YUYV camera
+    std::optional<double> duration_s;
     std::optional<std::string> camera;  // overrides camera.device
     bool lock_exposure = false;         // or camera.lock_exposure
     std::string sink = "uinput";
     std::optional<std::string> control_path;
     bool no_control = false;
 };
+
+double parse_duration(std::string_view text) {
+    const std::string value(text);
+    char* end = nullptr;
+    const double seconds = std::strtod(value.c_str(), &end);
+    // Up to a year: the milliseconds stay far inside the clock's range.
+    if (value.empty() || *end != '\0' || !(seconds > 0.0) || seconds > 365.0 * 86400.0) {
+        throw UsageError("--duration " + value + ": needs seconds > 0, as in --duration 60");
+    }
+    return seconds;
+}
 
 RunOptions parse_run_options(std::span<const std::string_view> args) {
     RunOptions options;
@@ -35,6 +52,10 @@ RunOptions parse_run_options(std::span<const std::string_view> args) {
             options.input = option_value(args, i);
         } else if (arg == "--unpaced") {
             options.paced = false;
+        } else if (arg == "--realtime") {
+            options.realtime = true;
+        } else if (arg == "--duration") {
+            options.duration_s = parse_duration(option_value(args, i));
         } else if (arg == "--camera") {
             options.camera = option_value(args, i);
         } else if (arg == "--lock-exposure") {
@@ -48,6 +69,12 @@ RunOptions parse_run_options(std::span<const std::string_view> args) {
         } else {
             throw UsageError(std::string(arg) + ": unknown option (see raypoint --help)");
         }
+    }
+    if (options.realtime && options.input.empty()) {
+        throw UsageError("--realtime replays a clip: it needs --input CLIP");
+    }
+    if (options.realtime && !options.paced) {
+        throw UsageError("--realtime and --unpaced contradict each other: choose one");
     }
     return options;
 }
@@ -70,7 +97,15 @@ int run_command(std::span<const std::string_view> args) {
     const RunOptions options = parse_run_options(rest);
 
     const auto& preprocess = parts.config.core.preprocess;
-    if (!options.input.empty()) {
+    if (options.duration_s) {
+        parts.duration = std::chrono::milliseconds(std::llround(*options.duration_s * 1000.0));
+    }
+    if (options.realtime) {
+        // With --duration the clip loops to fill it; without, it plays once.
+        parts.source = std::make_unique<RealtimeSource>(
+            load_yuyv_clip(options.input), options.input, options.duration_s.has_value());
+        parts.stop_at_end_of_input = true;
+    } else if (!options.input.empty()) {
         parts.source = std::make_unique<FileFrameSource>(options.input, options.paced);
         parts.stop_at_end_of_input = true;
     } else {

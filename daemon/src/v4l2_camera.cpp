@@ -273,6 +273,9 @@ Capture V4l2Camera::next(int timeout_ms) {
             capture.frame.timestamp = last_timestamp_ + 1;
         }
         last_timestamp_ = capture.frame.timestamp;
+        // Frame ready, for the latency to the output: when the driver stamped the buffer (for
+        // UVC that is the start of the frame's transfer, so the latency includes its USB time).
+        capture.ready = capture.frame.timestamp;
         capture.status = CaptureStatus::frame;
         return capture;
     }

@@ -39,6 +39,7 @@ class V4l2Camera final : public FrameSource {
     V4l2Camera& operator=(const V4l2Camera&) = delete;
 
     Capture next(int timeout_ms) override;
+    int wait_fd() const noexcept override { return fd_; }
     void release() noexcept override;
     bool reopen() override;
     const std::string& last_error() const noexcept override { return last_error_; }

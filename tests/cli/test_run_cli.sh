@@ -43,6 +43,10 @@ sleep 1
 "$raypoint" ctl status > "$work/status.txt" || fail "ctl status exited $?"
 grep -q '^state: ' "$work/status.txt" || fail "status: $(cat "$work/status.txt")"
 grep -q '^paused: no' "$work/status.txt" || fail "status before pause: $(cat "$work/status.txt")"
+for field in '^fps: ' '^cpu: ' '^run cpu: [0-9.]*% of one core' '^peak rss: [0-9.]* MiB' \
+             '^latency ready to write: median [0-9]* us, p99 [0-9]* us'; do
+  grep -q "$field" "$work/status.txt" || fail "status has no '$field': $(cat "$work/status.txt")"
+done
 "$raypoint" doctor > "$work/doctor.txt"
 grep -q '^ok   service  raypoint run answers on ' "$work/doctor.txt" || fail "doctor: $(cat "$work/doctor.txt")"
 grep -q '^ok   config ' "$work/doctor.txt" || fail "doctor config: $(cat "$work/doctor.txt")"
@@ -71,6 +75,32 @@ daemon_pid=""
 [ "$code" -eq 0 ] || fail "SIGTERM: exit $code"
 [ ! -e "$XDG_RUNTIME_DIR/raypoint.sock" ] || fail "socket left behind"
 grep -q "stopping on Terminated" "$work/live.log" || fail "no stop message"
+
+# --realtime: the clip decoded first, replayed as a YUYV camera through the control socket's
+# loop; looped to fill --duration; the cost summary at exit and in ctl status.
+"$raypoint" run --input "$work/nonconvex/video.mp4" --realtime --duration 3 \
+  --sink "file:$work/realtime.events" 2>"$work/realtime.log" &
+daemon_pid=$!
+for _ in $(seq 50); do [ -S "$XDG_RUNTIME_DIR/raypoint.sock" ] && break; sleep 0.1; done
+sleep 1
+"$raypoint" ctl status > "$work/status.txt" || fail "ctl status (realtime) exited $?"
+grep -q '^source: .*replayed in real time as YUYV 640x480' "$work/status.txt" ||
+  fail "realtime status: $(cat "$work/status.txt")"
+grep -q '^latency handed to write: median [0-9]* us' "$work/status.txt" ||
+  fail "realtime status: $(cat "$work/status.txt")"
+wait "$daemon_pid"
+code=$?
+daemon_pid=""
+[ "$code" -eq 0 ] || fail "--realtime --duration 3: exit $code"
+grep -q 'stopping: --duration reached' "$work/realtime.log" || fail "realtime: $(cat "$work/realtime.log")"
+grep -q 'cost of this run:' "$work/realtime.log" || fail "no cost summary: $(cat "$work/realtime.log")"
+grep -q 'run cpu: [0-9.]*% of one core (user' "$work/realtime.log" || fail "no run cpu in the summary"
+grep -q 'latency ready to write: median [0-9]* us, p99' "$work/realtime.log" || fail "no latency in the summary"
+grep -q 'EV_REL REL_X' "$work/realtime.events" || fail "realtime: no motion"
+"$raypoint" run --realtime --sink null --no-control 2>"$work/err.txt"
+[ $? -eq 2 ] && grep -q "needs --input" "$work/err.txt" || fail "--realtime alone: $(cat "$work/err.txt")"
+"$raypoint" run --input "$work/push/video.mp4" --duration 0 --sink null 2>"$work/err.txt"
+[ $? -eq 2 ] && grep -q "duration 0: needs seconds > 0" "$work/err.txt" || fail "--duration 0: $(cat "$work/err.txt")"
 
 # doctor without a daemon: the service check fails with its fix.
 "$raypoint" doctor > "$work/doctor.txt" && fail "doctor passed without a daemon"
