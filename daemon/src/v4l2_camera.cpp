@@ -14,8 +14,6 @@
 #include <optional>
 #include <utility>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "camera_errors.hpp"
 #include "v4l2_device.hpp"
 
@@ -137,6 +135,11 @@ void V4l2Camera::negotiate_format() {
         (got.pixelformat == V4L2_PIX_FMT_YUYV && mode_.size.width % 2 != 0)) {
         throw CameraError(label_ + ": asked for " + describe(*chosen) + ", the driver set " +
                           describe(mode_));
+    }
+    if (chosen->fourcc != V4L2_PIX_FMT_YUYV && !jpeg_) {
+        // The mode's own size as the least size: a full-size decode unless asked to scale.
+        jpeg_ =
+            std::make_unique<JpegDecoder>(options_.scaled_mjpeg ? options_.working : mode_.size);
     }
     const int packed = chosen->fourcc == V4L2_PIX_FMT_YUYV ? mode_.size.width * 2 : 0;
     stride_ = std::max(static_cast<int>(got.bytesperline), packed);
@@ -299,17 +302,16 @@ bool V4l2Camera::make_frame(std::uint32_t index, std::size_t bytesused, Capture&
         held_ = static_cast<int>(index);  // the driver gets it back on the next call
         return true;
     }
-    // MJPEG, the slow path: a CPU decode of every frame (a few ms at 640x480). imdecode into
-    // the same Mat reuses its memory. Some UVC cameras omit the Huffman tables; libjpeg(-turbo)
-    // supplies the standard ones.
-    const cv::Mat encoded(1, static_cast<int>(bytesused), CV_8UC1, const_cast<std::uint8_t*>(data));
-    cv::imdecode(encoded, cv::IMREAD_COLOR, &bgr_);
-    if (bgr_.empty() || bgr_.type() != CV_8UC3) return false;  // a corrupt JPEG: skip it
+    // MJPEG, the slow path: a CPU decode of every frame (a few ms at 640x480; less with
+    // scaled_mjpeg). Some UVC cameras omit the Huffman tables; libjpeg-turbo supplies the
+    // standard ones.
+    if (!jpeg_->decode(data, bytesused)) return false;  // a corrupt JPEG: skip it
+    const cv::Mat& bgr = jpeg_->bgr();
     held_ = static_cast<int>(index);  // queued on the next call, like a YUYV buffer
-    frame.data = bgr_.data;
-    frame.width = bgr_.cols;
-    frame.height = bgr_.rows;
-    frame.stride = static_cast<int>(bgr_.step[0]);
+    frame.data = bgr.data;
+    frame.width = bgr.cols;
+    frame.height = bgr.rows;
+    frame.stride = static_cast<int>(bgr.step[0]);
     frame.format = core::PixelFormat::bgr;
     return true;
 }
@@ -353,7 +355,13 @@ bool V4l2Camera::reopen() {
 
 std::string V4l2Camera::description() const {
     std::string text = label_ + ": " + card_ + "; " + describe(mode_);
-    if (mode_.fourcc != V4L2_PIX_FMT_YUYV) text += " (decoded on the CPU: the slow path)";
+    if (mode_.fourcc != V4L2_PIX_FMT_YUYV) {
+        const int eighths =
+            options_.scaled_mjpeg ? JpegDecoder::scale_for(mode_.size, options_.working) : 8;
+        text += eighths == 8 ? std::string(" (decoded on the CPU: the slow path)")
+                             : " (decoded on the CPU at " + std::to_string(eighths) +
+                                   "/8 scale: the slow path)";
+    }
     text += ", " + std::to_string(buffers_.size()) + " buffers";
     if (fd_ < 0) text += ", closed";
     for (const std::string& entry : lock_report_)
