@@ -10,12 +10,8 @@ FileFrameSource::FileFrameSource(const std::string& path, bool paced)
     : video_(path, 0.0), paced_(paced) {}
 
 Capture FileFrameSource::next(int timeout_ms) {
+    if (finished_) return end_of_input_capture();
     Capture capture;
-    if (finished_) {
-        capture.status = CaptureStatus::lost;
-        capture.reason = "end of input";
-        return capture;
-    }
     try {
         current_ = video_.next();
     } catch (const InputError& e) {
@@ -25,7 +21,7 @@ Capture FileFrameSource::next(int timeout_ms) {
     if (!current_) {
         finished_ = true;
         capture.status = CaptureStatus::lost;
-        if (capture.reason.empty()) capture.reason = "end of input";
+        if (capture.reason.empty()) capture.reason = end_of_input;
         return capture;
     }
     if (paced_) {

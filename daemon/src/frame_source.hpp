@@ -26,6 +26,14 @@ struct Capture {
     core::Timestamp ready = -1;
 };
 
+// A recorded source's last word: lost, with this reason, which the loop takes as the end of the
+// input rather than a camera to reopen.
+inline constexpr const char* end_of_input = "end of input";
+
+inline Capture end_of_input_capture() {
+    return Capture{CaptureStatus::lost, {}, end_of_input};
+}
+
 class FrameSource {
   public:
     virtual ~FrameSource() = default;

@@ -169,7 +169,7 @@ void PointerDaemon::on_frame(const Capture& capture) {
 
 void PointerDaemon::on_lost(const std::string& reason) {
     release_buttons();
-    if (reason == "end of input") {
+    if (reason == end_of_input) {
         camera_lost_ = true;
         return;
     }

@@ -50,12 +50,8 @@ void RealtimeSource::arm(core::Timestamp when) noexcept {
 }
 
 Capture RealtimeSource::next(int timeout_ms) {
+    if (finished_) return end_of_input_capture();
     Capture capture;
-    if (finished_) {
-        capture.status = CaptureStatus::lost;
-        capture.reason = "end of input";
-        return capture;
-    }
     core::Timestamp now = monotonic_now_us();
     // A frame already due (the loop is behind) is taken without asking the timer, which may
     // not have fired yet for an instant in the past.
@@ -77,9 +73,7 @@ Capture RealtimeSource::next(int timeout_ms) {
     }
     if (!loop_ && serial_ >= clip_.frame_count()) {
         finished_ = true;
-        capture.status = CaptureStatus::lost;
-        capture.reason = "end of input";
-        return capture;
+        return end_of_input_capture();
     }
     const core::Timestamp when = due(serial_);
     if (when > now) {  // woken before the frame was due (a clock step): wait for it
