@@ -254,6 +254,13 @@ const std::vector<Key>& schema() {
             "camera", "lock_exposure",
             "lock auto exposure, gain and white balance, so brightness cannot jump",
             [](auto& c) -> auto& { return c.camera.lock_exposure; }),
+        integer_key(
+            "camera", "min_width", 160, 3840,
+            "capture at the camera's smallest size at least min_width x min_height (else any)",
+            [](auto& c) -> auto& { return c.camera.min_width; }),
+        integer_key(
+            "camera", "min_height", 120, 2160, "see min_width; MJPEG is decoded down to it",
+            [](auto& c) -> auto& { return c.camera.min_height; }),
     };
     return keys;
 }

@@ -112,6 +112,7 @@ int run_command(std::span<const std::string_view> args) {
         CameraOptions camera;
         camera.device = options.camera ? *options.camera : parts.config.camera.device;
         camera.working = cv::Size(preprocess.work_width, preprocess.work_height);
+        camera.least = cv::Size(parts.config.camera.min_width, parts.config.camera.min_height);
         camera.lock_exposure = options.lock_exposure || parts.config.camera.lock_exposure;
         parts.source = std::make_unique<V4l2Camera>(camera);
     }

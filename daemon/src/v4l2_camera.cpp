@@ -110,7 +110,10 @@ void V4l2Camera::open_node(const std::string& node, const std::string& label) {
 
 void V4l2Camera::negotiate_format() {
     const std::vector<CameraMode> offered = offered_modes(fd_);
-    const auto chosen = choose_format(offered, options_.working);
+    const cv::Size least = options_.capture_least();
+    // A camera without a mode that large still works at any size the core can read.
+    auto chosen = choose_format(offered, least);
+    if (!chosen) chosen = choose_format(offered, options_.working);
     if (!chosen) {
         std::string list;
         for (const auto& mode : offered)
@@ -138,8 +141,7 @@ void V4l2Camera::negotiate_format() {
     }
     if (chosen->fourcc != V4L2_PIX_FMT_YUYV && !jpeg_) {
         // The mode's own size as the least size: a full-size decode unless asked to scale.
-        jpeg_ =
-            std::make_unique<JpegDecoder>(options_.scaled_mjpeg ? options_.working : mode_.size);
+        jpeg_ = std::make_unique<JpegDecoder>(options_.scaled_mjpeg ? least : mode_.size);
     }
     const int packed = chosen->fourcc == V4L2_PIX_FMT_YUYV ? mode_.size.width * 2 : 0;
     stride_ = std::max(static_cast<int>(got.bytesperline), packed);
@@ -356,8 +358,9 @@ bool V4l2Camera::reopen() {
 std::string V4l2Camera::description() const {
     std::string text = label_ + ": " + card_ + "; " + describe(mode_);
     if (mode_.fourcc != V4L2_PIX_FMT_YUYV) {
-        const int eighths =
-            options_.scaled_mjpeg ? JpegDecoder::scale_for(mode_.size, options_.working) : 8;
+        const int eighths = options_.scaled_mjpeg
+                                ? JpegDecoder::scale_for(mode_.size, options_.capture_least())
+                                : 8;
         text += eighths == 8 ? std::string(" (decoded on the CPU: the slow path)")
                              : " (decoded on the CPU at " + std::to_string(eighths) +
                                    "/8 scale: the slow path)";

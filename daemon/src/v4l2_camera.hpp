@@ -3,6 +3,7 @@
 // streams through memory-mapped driver buffers and hands out frames without copying (YUYV) or
 // decoded once by libjpeg-turbo (MJPEG, the slow path).
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -24,16 +25,26 @@ struct CameraOptions {
     // frame within first_frame_timeout_ms.
     std::string device = "auto";
     cv::Size working{160, 120};  // the core's working size: frames must be at least this big
+    // The smallest size worth capturing and decoding at ([camera] min_width/min_height): the
+    // camera's smallest mode at least this (and `working`) large is asked for. Measured on the
+    // rendered scenes (docs/performance.md): 320x240 tracks as 640x480 does; at 160x120 the
+    // Poisson-disk filter's radius shrinks with the input and realworld's depth r drops 0.88 ->
+    // 0.68.
+    cv::Size least{320, 240};
     // Switch auto exposure, auto gain and auto white balance off, where the camera has them, so
     // the camera does not change the image's brightness behind the tracker's back. The values
     // before are put back on release(): cameras keep controls after the program exits.
     bool lock_exposure = false;
     int first_frame_timeout_ms = 2000;
-    // MJPEG modes: decode at the smallest n/8 scale still at least `working` (jpeg_decoder.hpp;
-    // 3 to 5 times less decoding at 640x480) instead of at full size. Off: on the rendered
-    // scenes it tracks as well as the full decode except `realworld` (skin hand, cluttered
-    // room), tracked in 54% of frames instead of 100%, as with any 160x120 input.
-    bool scaled_mjpeg = false;
+    // MJPEG modes: decode at the smallest n/8 scale still at least capture_least()
+    // (jpeg_decoder.hpp) instead of at full size. realworld through a q80 JPEG at 640x480:
+    // full decode 100% tracked, depth r 0.906; 1/2 scale 100%, 0.913; 1/4 (160x120) 100%, 0.758.
+    bool scaled_mjpeg = true;
+
+    // Per axis the larger of `working` and `least`.
+    cv::Size capture_least() const noexcept {
+        return {std::max(working.width, least.width), std::max(working.height, least.height)};
+    }
 };
 
 class V4l2Camera final : public FrameSource {

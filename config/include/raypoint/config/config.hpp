@@ -14,6 +14,10 @@ struct CameraSettings {
     // Locking auto exposure, gain and white balance removes the brightness jumps the paper works
     // around; off by default because a room's light changes over a day.
     bool lock_exposure = false;
+    // The smallest frame size worth capturing (docs/performance.md, "Camera size"): 320x240
+    // tracks as 640x480 does at a quarter of the bytes; 160x120 loses depth precision.
+    int min_width = 320;
+    int min_height = 240;
 };
 
 struct Config {
