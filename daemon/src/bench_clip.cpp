@@ -1,7 +1,5 @@
 #include "bench_clip.hpp"
 
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -22,9 +20,8 @@ std::string clip_name(const fs::path& video) {
     return video.stem().string();
 }
 
-}  // namespace
-
-BenchClip load_clip(const std::string& argument, int max_frames) {
+// The video of a CLIP argument: the file itself, or a scene folder's video.mp4.
+fs::path video_path(const std::string& argument) {
     fs::path video(argument);
     std::error_code error;
     if (fs::is_directory(video, error)) {
@@ -34,6 +31,23 @@ BenchClip load_clip(const std::string& argument, int max_frames) {
                              "file or a scene folder)");
         }
     }
+    return video;
+}
+
+fs::path truth_folder(const fs::path& video) {
+    return video.has_parent_path() ? video.parent_path() : fs::path(".");
+}
+
+}  // namespace
+
+void check_clip(const std::string& argument) {
+    const fs::path video = video_path(argument);
+    const VideoSource source(video.string(), 0.0);
+    read_ground_truth(truth_folder(video), 2);
+}
+
+BenchClip load_clip(const std::string& argument, int max_frames) {
+    const fs::path video = video_path(argument);
     BenchClip clip;
     clip.name = clip_name(video);
     VideoSource source(video.string(), 0.0);
@@ -42,8 +56,7 @@ BenchClip load_clip(const std::string& argument, int max_frames) {
         if (!frame) break;
         clip.frames.push_back(std::move(*frame));
     }
-    const fs::path folder = video.has_parent_path() ? video.parent_path() : fs::path(".");
-    clip.truth = read_ground_truth(folder, max_frames);
+    clip.truth = read_ground_truth(truth_folder(video), max_frames);
     return clip;
 }
 

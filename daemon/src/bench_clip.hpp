@@ -22,6 +22,10 @@ struct BenchClip {
 // Throws InputError.
 BenchClip load_clip(const std::string& argument, int max_frames);
 
+// What load_clip would throw for this argument, found by opening the video and reading the
+// truth's first lines, without decoding: to fail before minutes spent on other clips.
+void check_clip(const std::string& argument);
+
 // A preset of the project's scene renderer (tests/scene), rendered in memory with its exact
 // truth and masks. Throws UsageError for an unknown preset.
 BenchClip render_clip(const std::string& preset, int max_frames);

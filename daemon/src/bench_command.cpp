@@ -2,11 +2,8 @@
 
 #include <unistd.h>
 
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -137,12 +134,8 @@ int bench_command(std::span<const std::string_view> args) {
             throw UsageError(std::string("--scenes: ") + e.what());
         }
     }
-    for (const std::string& clip : options.clips) {
-        std::error_code error;
-        if (!std::filesystem::exists(clip, error)) {
-            throw InputError(clip + ": cannot open: " + std::strerror(ENOENT));
-        }
-    }
+    for (const std::string& clip : options.clips)
+        check_clip(clip);
     std::vector<ClipResults> results;
     const auto& inputs = options.clips.empty() ? options.scenes : options.clips;
     for (const std::string& input : inputs) {
