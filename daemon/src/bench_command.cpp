@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/core.hpp>
+
 #include "bench_clip.hpp"
 #include "bench_report.hpp"
 #include "bench_runner.hpp"
@@ -112,6 +114,10 @@ ClipResults measure(const BenchClip& clip, const core::Settings& settings,
         progress(clip.name + ": raypoint " + std::string(core::to_string(kind)));
         results.systems.push_back(run_raypoint(clip, variant, start));
     }
+    // MIL (and CSRT, KCF) draw from OpenCV's global generator: start each clip's peers from its
+    // default seed, as score.py's process a scene does, so a clip's figures do not depend on
+    // the clips before it. They still depend on the peers before them, as in score.py.
+    cv::theRNG() = cv::RNG();
     for (const PeerKind peer : peers) {
         progress(clip.name + ": " + std::string(to_string(peer)));
         results.systems.push_back(run_peer(clip, peer, start));
@@ -136,6 +142,9 @@ int bench_command(std::span<const std::string_view> args) {
     }
     for (const std::string& clip : options.clips)
         check_clip(clip);
+    // One core for everyone: OpenCV would spread the peers' (and imgproc's) loops over every
+    // core, which the daemon, running all day in the background, must not do.
+    cv::setNumThreads(1);
     std::vector<ClipResults> results;
     const auto& inputs = options.clips.empty() ? options.scenes : options.clips;
     for (const std::string& input : inputs) {
@@ -150,7 +159,8 @@ int bench_command(std::span<const std::string_view> args) {
         "raypoint " + std::string(core::to_string(config.core.estimator.kind));
     if (options.format == BenchFormat::table) {
         std::printf(
-            "# raypoint bench: microseconds a frame on one core, decoded frames in memory; "
+            "# raypoint bench: microseconds a frame on one core (OpenCV threads: 1), decoded "
+            "frames in memory; "
             "peers started from the true box; x default = median / %s's median\n",
             reference.c_str());
     }

@@ -1,6 +1,7 @@
 #include "bench_report.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -59,6 +60,18 @@ void set_ratios(std::vector<BenchRow>::iterator begin, std::vector<BenchRow>::it
     for (auto row = begin; row != end; ++row) {
         if (row->median_us) row->ratio = *row->median_us / *ref->median_us;
     }
+}
+
+// A row's figures after clip and system, as the table and the Markdown show them.
+std::vector<std::string> cells(const BenchRow& r, const char* ratio_pattern) {
+    return {std::to_string(r.frames),
+            format(r.median_us, "%.0f"),
+            format(r.p95_us, "%.0f"),
+            format(r.ratio, ratio_pattern),
+            format(r.tracked, "%.1f%%", 100.0),
+            format(r.centroid_error, "%.2f"),
+            format(r.area_error, "%.1f%%", 100.0),
+            format(r.depth_r, "%.3f")};
 }
 
 }  // namespace
@@ -131,49 +144,39 @@ std::vector<BenchRow> bench_rows(const std::vector<ClipResults>& clips,
 }
 
 void print_rows(std::FILE* out, const std::vector<BenchRow>& rows, BenchFormat format_kind) {
+    constexpr std::array<int, 8> widths = {6, 9, 9, 9, 8, 8, 9, 8};
+    constexpr std::array<const char*, 8> table_heads = {
+        "frames", "median us", "p95 us", "x default", "tracked", "cerr px", "area err", "depth r"};
     for (const BenchRow& r : rows) {
+        const bool first = &r == &rows.front();
         switch (format_kind) {
             case BenchFormat::table: {
-                if (&r == &rows.front()) {
-                    std::fprintf(out, "%-12s %-25s %6s %9s %9s %9s %8s %8s %9s %8s\n", "clip",
-                                 "system", "frames", "median us", "p95 us", "x default", "tracked",
-                                 "cerr px", "area err", "depth r");
-                }
-                if (!r.error.empty()) {
-                    std::fprintf(out, "%-12s %-25s error: %s\n", r.clip.c_str(), r.system.c_str(),
-                                 r.error.c_str());
-                    break;
-                }
-                std::fprintf(out, "%-12s %-25s %6zu %9s %9s %9s %8s %8s %9s %8s\n", r.clip.c_str(),
-                             r.system.c_str(), r.frames, format(r.median_us, "%.0f").c_str(),
-                             format(r.p95_us, "%.0f").c_str(), format(r.ratio, "%.2fx").c_str(),
-                             format(r.tracked, "%.1f%%", 100.0).c_str(),
-                             format(r.centroid_error, "%.2f").c_str(),
-                             format(r.area_error, "%.1f%%", 100.0).c_str(),
-                             format(r.depth_r, "%.3f").c_str());
+                if (first) std::fprintf(out, "%-12s %-25s", "clip", "system");
+                for (std::size_t i = 0; first && i < widths.size(); ++i)
+                    std::fprintf(out, " %*s", widths[i], table_heads[i]);
+                if (first) std::fputc('\n', out);
+                std::fprintf(out, "%-12s %-25s", r.clip.c_str(), r.system.c_str());
+                if (!r.error.empty()) std::fprintf(out, " error: %s", r.error.c_str());
+                const auto values = cells(r, "%.2fx");
+                for (std::size_t i = 0; r.error.empty() && i < widths.size(); ++i)
+                    std::fprintf(out, " %*s", widths[i], values[i].c_str());
+                std::fputc('\n', out);
                 break;
             }
             case BenchFormat::markdown: {
-                if (&r == &rows.front()) {
+                if (first) {
                     std::fputs(
                         "| clip | system | frames | median µs | p95 µs | × default | "
                         "tracked | centroid error px | area error | depth r |\n"
                         "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|\n",
                         out);
                 }
-                if (!r.error.empty()) {
-                    std::fprintf(out, "| %s | %s | error: %s |||||||||\n", r.clip.c_str(),
-                                 r.system.c_str(), r.error.c_str());
-                    break;
-                }
-                std::fprintf(out, "| %s | %s | %zu | %s | %s | %s | %s | %s | %s | %s |\n",
-                             r.clip.c_str(), r.system.c_str(), r.frames,
-                             format(r.median_us, "%.0f").c_str(), format(r.p95_us, "%.0f").c_str(),
-                             format(r.ratio, "%.2f×").c_str(),
-                             format(r.tracked, "%.1f%%", 100.0).c_str(),
-                             format(r.centroid_error, "%.2f").c_str(),
-                             format(r.area_error, "%.1f%%", 100.0).c_str(),
-                             format(r.depth_r, "%.3f").c_str());
+                std::fprintf(out, "| %s | %s |", r.clip.c_str(), r.system.c_str());
+                if (!r.error.empty()) std::fprintf(out, " error: %s ||||||||", r.error.c_str());
+                for (const std::string& value :
+                     r.error.empty() ? cells(r, "%.2f×") : std::vector<std::string>{})
+                    std::fprintf(out, " %s |", value.c_str());
+                std::fputc('\n', out);
                 break;
             }
             case BenchFormat::jsonl: {

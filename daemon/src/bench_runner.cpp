@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <set>
 
 #include "raypoint/core/tracker.hpp"
 
@@ -83,7 +82,6 @@ SystemResult run_peer(const BenchClip& clip, PeerKind kind, const PeerStart& sta
     SystemResult out;
     out.system = std::string(to_string(kind));
     scene::Evaluator evaluator;
-    std::set<int> box_sizes;
     try {
         const auto peer = make_peer(kind);
         for (std::size_t i = 0; i < clip.frames.size(); ++i) {
@@ -95,7 +93,6 @@ SystemResult run_peer(const BenchClip& clip, PeerKind kind, const PeerStart& sta
                 const auto begin = Clock::now();
                 box = peer->update(bgr);
                 out.microseconds.push_back(microseconds_since(begin));
-                if (box) box_sizes.insert(box->area());
             }
             if (clip.truth && i < clip.truth->truth.size()) {
                 evaluator.add(clip.truth->truth[i], clip.truth->masks[i],
@@ -109,9 +106,6 @@ SystemResult run_peer(const BenchClip& clip, PeerKind kind, const PeerStart& sta
         return out;
     }
     finish(clip, evaluator, out);
-    // KCF and MIL keep their first box's size: a constant has no correlation (score.py checks
-    // np.std > 0), though rounding can leave a tiny variance in the evaluator's sums.
-    if (out.accuracy && box_sizes.size() < 2) out.accuracy->depth_correlation.reset();
     return out;
 }
 
