@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "bench_command.hpp"
 #include "compare_command.hpp"
 #include "config_commands.hpp"
 #include "demo_command.hpp"
@@ -51,6 +52,15 @@ commands:
       --scene NAME           scene preset (default nonconvex)
       --annotate OUT.mp4     annotated clip (default raypoint-demo.mp4)
   compare-estimators         measure the four estimators (docs/estimators.md)
+  bench [CLIP...]  time raypoint's core (each estimator) against OpenCV's CamShift,
+                   KCF, CSRT and MIL on the same decoded frames, with accuracy
+                   where a CLIP has truth.jsonl and masks.npz beside it; a CLIP is
+                   a video or a scene folder (default: rendered scenes)
+      --peers LIST           camshift,kcf,csrt,mil (default all) or none
+      --scenes LIST          rendered scenes without CLIP (default ideal,lowlight,
+                             interfering,nonconvex,realworld,fast,pause)
+      --frames N             at most N frames a clip
+      --format table|markdown|jsonl
   print-config     print the effective configuration as an INI file (the file
                    raypoint run reads, see check-config, and the options below)
       --defaults             read no configuration file
@@ -58,7 +68,7 @@ commands:
                              reads ($XDG_CONFIG_HOME/raypoint/raypoint.ini, then
                              raypoint/raypoint.ini in $XDG_CONFIG_DIRS)
 
-options for run, track, demo, compare-estimators and print-config:
+options for run, track, demo, compare-estimators, bench and print-config:
   --config FILE              read the settings from an INI file (see print-config)
   --preset default|paper     start from the measured defaults or the paper exactly
   --estimator NAME           ray|iterative-ray|iterative-ny-ray|raster
@@ -82,6 +92,7 @@ int main(int argc, char** argv) {
         if (command == "track") return raypoint::daemon::track_command(args);
         if (command == "demo") return raypoint::daemon::demo_command(args);
         if (command == "compare-estimators") return raypoint::daemon::compare_command(args);
+        if (command == "bench") return raypoint::daemon::bench_command(args);
         if (command == "print-config") return raypoint::daemon::print_config_command(args);
         if (command == "check-config") return raypoint::daemon::check_config_command(args);
         throw raypoint::daemon::UsageError(std::string(command) +

@@ -6,26 +6,32 @@
 namespace raypoint::scene {
 namespace {
 
+// numpy's median (score.py's): the mean of the two middle values of an even count.
 std::optional<double> median(std::vector<double> values) {
     if (values.empty()) return std::nullopt;
     const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
     std::nth_element(values.begin(), middle, values.end());
-    return *middle;
+    if (values.size() % 2 != 0) return *middle;
+    return (*std::max_element(values.begin(), middle) + *middle) / 2.0;
 }
 
 std::optional<double> correlation(const std::vector<double>& a, const std::vector<double>& b) {
     if (a.size() <= 10) return std::nullopt;
     const auto n = static_cast<double>(a.size());
+    // Measured from the first sample, so a constant series (a fixed-size box, a fixed true
+    // depth) has exactly zero variance instead of rounding noise that would pass for a value.
     double mean_a = 0.0, mean_b = 0.0;
     for (std::size_t i = 0; i < a.size(); ++i) {
-        mean_a += a[i] / n;
-        mean_b += b[i] / n;
+        mean_a += (a[i] - a[0]) / n;
+        mean_b += (b[i] - b[0]) / n;
     }
     double cov = 0.0, var_a = 0.0, var_b = 0.0;
     for (std::size_t i = 0; i < a.size(); ++i) {
-        cov += (a[i] - mean_a) * (b[i] - mean_b);
-        var_a += (a[i] - mean_a) * (a[i] - mean_a);
-        var_b += (b[i] - mean_b) * (b[i] - mean_b);
+        const double da = a[i] - a[0] - mean_a;
+        const double db = b[i] - b[0] - mean_b;
+        cov += da * db;
+        var_a += da * da;
+        var_b += db * db;
     }
     if (var_a <= 0.0 || var_b <= 0.0) return std::nullopt;
     return cov / std::sqrt(var_a * var_b);
