@@ -50,7 +50,8 @@ int brightness_offset(const cv::Mat& difference, int minima) noexcept {
     return largest;
 }
 
-Preprocessor::Preprocessor(const PreprocessSettings& settings) : settings_(settings) {
+Preprocessor::Preprocessor(const PreprocessSettings& settings, InstructionSet instructions)
+    : settings_(settings), instructions_(instructions) {
     const cv::Size size(settings.work_width, settings.work_height);
     for (int i = 0; i < 2; ++i) {
         color_[i].create(size, CV_8UC3);
@@ -120,8 +121,15 @@ void Preprocessor::prepare(const FrameView& frame) {
         if (centre_columns_[x] % 2 != 0) uniform_parity_ = false;
     }
     tap_odd_.assign(taps.size(), 0);
-    for (std::size_t t = 0; t < taps.size(); ++t)
+    tap_shift_bytes_.assign(taps.size(), 0);
+    centre_bytes_.resize(static_cast<std::size_t>(settings_.work_width));
+    const bool bgr = frame.format == PixelFormat::bgr;
+    for (std::size_t t = 0; t < taps.size(); ++t) {
         tap_odd_[t] = (tap_dx_[t] & 1) != 0 ? 1 : 0;
+        tap_shift_bytes_[t] = bgr ? tap_dx_[t] * 3 : (tap_dx_[t] & ~1) * 2;
+    }
+    for (int x = 0; x < settings_.work_width; ++x)
+        centre_bytes_[x] = bgr ? centre_columns_[x] * 3 : (centre_columns_[x] & ~1) * 2;
 }
 
 bool Preprocessor::process(const FrameView& frame) noexcept {
@@ -149,7 +157,6 @@ bool Preprocessor::process(const FrameView& frame) noexcept {
             filter_yuyv(frame);
             break;
     }
-    cv::cvtColor(color_[current_], gray_[current_], cv::COLOR_BGR2GRAY);
     compute_edges();
     ++processed_;
     compute_difference();

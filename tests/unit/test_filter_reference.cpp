@@ -2,7 +2,8 @@
 // the documented definition: working pixel centre round((i + 0.5) * N / n - 0.5), taps at
 // round(tap * radius) with radius = filter_radius * width / 640, clamped to the frame, summed
 // and divided with rounding. The core's SIMD and clamped paths must match it exactly, in BGR
-// and in YUYV, at sizes that take each path.
+// and in YUYV, at sizes that take each path, with every instruction set this CPU runs; the grey
+// image computed alongside must equal OpenCV's cv::COLOR_BGR2GRAY of the colour image.
 
 #include <gtest/gtest.h>
 
@@ -10,12 +11,14 @@
 #include <vector>
 
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "raypoint/core/preprocess.hpp"
 
 namespace {
 
 using raypoint::core::FrameView;
+using raypoint::core::InstructionSet;
 using raypoint::core::PixelFormat;
 using raypoint::core::Preprocessor;
 using raypoint::core::PreprocessSettings;
@@ -73,20 +76,37 @@ cv::Mat reference(const cv::Mat& frame, PixelFormat format, int width, cv::Size 
     return out;
 }
 
+// The sets this CPU can run: scalar and SSE2 always on x86-64, AVX2 when it has it.
+std::vector<InstructionSet> runnable_sets() {
+    std::vector<InstructionSet> sets{InstructionSet::scalar};
+    const InstructionSet best = raypoint::core::best_instruction_set();
+    if (best != InstructionSet::scalar) sets.push_back(InstructionSet::sse2);
+    if (best == InstructionSet::avx2) sets.push_back(InstructionSet::avx2);
+    return sets;
+}
+
 void expect_matches_reference(cv::Size size, PixelFormat format) {
     const int bytes_per_row = format == PixelFormat::bgr ? size.width * 3 : size.width * 2;
     cv::Mat frame(size.height, bytes_per_row, CV_8U);
     cv::randu(frame, 0, 256);
     PreprocessSettings settings;
-    Preprocessor preprocessor(settings);
-    ASSERT_TRUE(preprocessor.process(
-        FrameView{frame.data, size.width, size.height, static_cast<int>(frame.step), format, 0}));
     const cv::Mat expected =
         reference(frame, format, size.width, cv::Size(settings.work_width, settings.work_height));
-    cv::Mat difference;
-    cv::absdiff(preprocessor.color(), expected, difference);
-    EXPECT_EQ(cv::countNonZero(difference.reshape(1)), 0)
-        << size << (format == PixelFormat::bgr ? " BGR" : " YUYV");
+    cv::Mat expected_grey;
+    cv::cvtColor(expected, expected_grey, cv::COLOR_BGR2GRAY);
+    for (const InstructionSet set : runnable_sets()) {
+        Preprocessor preprocessor(settings, set);
+        ASSERT_TRUE(preprocessor.process(FrameView{frame.data, size.width, size.height,
+                                                   static_cast<int>(frame.step), format, 0}));
+        const std::string where = std::to_string(size.width) + "x" + std::to_string(size.height) +
+                                  (format == PixelFormat::bgr ? " BGR " : " YUYV ") +
+                                  std::string(to_string(set));
+        cv::Mat difference;
+        cv::absdiff(preprocessor.color(), expected, difference);
+        EXPECT_EQ(cv::countNonZero(difference.reshape(1)), 0) << where;
+        cv::absdiff(preprocessor.gray(), expected_grey, difference);
+        EXPECT_EQ(cv::countNonZero(difference), 0) << where << " grey";
+    }
 }
 
 // 640, 1280, 1920: integer scales (SIMD interior); 642 and 320: the clamped path.

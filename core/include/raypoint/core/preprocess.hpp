@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -12,6 +13,9 @@
 #include "raypoint/core/settings.hpp"
 
 namespace raypoint::core {
+
+// The Poisson-disk filter's tap count: a power of two, so the taps' mean is a shift.
+inline constexpr int poisson_disk_tap_count = 16;
 
 // Offsets of the Poisson-disk filter's taps in a unit disk: a fixed, deterministic sample set
 // (best-candidate sampling, minimum spacing about 0.45 radius) including the centre.
@@ -22,9 +26,20 @@ const std::vector<cv::Point2f>& poisson_disk_taps();
 // the largest present value). Histogram based, so O(pixels) and no sorting.
 int brightness_offset(const cv::Mat& difference, int minima) noexcept;
 
+// The widest vector instructions preprocessing may use. Every set gives the same images bit
+// for bit; only the time differs (docs/performance.md).
+enum class InstructionSet {
+    scalar,
+    sse2,  // part of x86-64
+    avx2,  // chosen at run time when the CPU has it
+};
+InstructionSet best_instruction_set() noexcept;
+std::string_view to_string(InstructionSet set) noexcept;
+
 class Preprocessor {
   public:
-    explicit Preprocessor(const PreprocessSettings& settings);
+    explicit Preprocessor(const PreprocessSettings& settings,
+                          InstructionSet instructions = best_instruction_set());
 
     // Returns false for a frame the core cannot read (null data, odd YUYV width, stride too
     // small, smaller than the working size): the frame is skipped, nothing changes.
@@ -49,8 +64,7 @@ class Preprocessor {
     void filter_bgr(const FrameView& frame) noexcept;
     void filter_yuyv(const FrameView& frame) noexcept;
     void start_row(const FrameView& frame, int y) noexcept;
-    template <typename Store>
-    void store_yuyv_clamped(int x, Store& store) const noexcept;
+    void shift_taps(int sign) noexcept;
     void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
     void compute_edges() noexcept;
     template <int Channels>
@@ -59,6 +73,7 @@ class Preprocessor {
     double compensate(cv::Mat& difference) noexcept;
 
     PreprocessSettings settings_;
+    InstructionSet instructions_;
     int input_width_ = 0;
     int input_height_ = 0;
     PixelFormat input_format_ = PixelFormat::bgr;
@@ -69,6 +84,10 @@ class Preprocessor {
     // column of its centre. Working columns in [interior_begin_, interior_end_) need no clamping.
     std::vector<int> tap_dx_;
     std::vector<int> centre_columns_;
+    // Per working column, the byte offset of its centre pixel (BGR) or its pair (YUYV); per
+    // tap, the byte shift of its column from there (see detail::FilterRow).
+    std::vector<int> centre_bytes_;
+    std::vector<int> tap_shift_bytes_;
     // YUYV: every interior working column's centre is even, so a tap's Y is at a fixed place
     // in its pair (tap_odd_).
     bool uniform_parity_ = false;
@@ -78,8 +97,7 @@ class Preprocessor {
     std::vector<const std::uint8_t*> tap_row_pointers_;
     std::vector<int> squared_channels_;  // one row of squared Sobel magnitudes, per channel
     std::vector<float> strongest_;       // one row: the strongest channel's
-    std::vector<int> last_tap_row_;  // per working row, the lowest input row a tap reads  // one
-                                     // row of squared Sobel magnitudes
+    std::vector<int> last_tap_row_;      // per working row, the lowest input row a tap reads
     std::array<cv::Mat, 2> color_;
     std::array<cv::Mat, 2> gray_;
     int current_ = 0;

@@ -1,0 +1,242 @@
+// SSE2 and AVX2 kernels of the Poisson-disk filter's interior. AVX2 is compiled per function
+// (target attribute) and only called when the CPU has it (best_instruction_set()); SSE2 is
+// part of x86-64. Both store exactly what store_bgr() / store_yuv() would.
+
+#include "filter_kernels.hpp"
+
+#include <cstring>
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define RAYPOINT_X86 1
+#endif
+
+namespace raypoint::core {
+
+InstructionSet best_instruction_set() noexcept {
+#if defined(RAYPOINT_X86)
+    if (__builtin_cpu_supports("avx2")) return InstructionSet::avx2;
+    return InstructionSet::sse2;
+#else
+    return InstructionSet::scalar;
+#endif
+}
+
+std::string_view to_string(InstructionSet set) noexcept {
+    switch (set) {
+        case InstructionSet::scalar:
+            return "scalar";
+        case InstructionSet::sse2:
+            return "sse2";
+        case InstructionSet::avx2:
+            return "avx2";
+    }
+    return "?";
+}
+
+namespace detail {
+
+#if defined(RAYPOINT_X86)
+namespace {
+
+int load32(const std::uint8_t* at) noexcept {
+    int value = 0;
+    std::memcpy(&value, at, 4);
+    return value;
+}
+
+// Four BGR(X) tap sums, pixels 0-1 in `low` and 2-3 in `high` (16-bit lanes B G R X), to
+// their means and grey. A pixel is stored as 4 bytes whose 4th the next one overwrites: the
+// last spills into column x + 4, which the caller guarantees exists and is written later.
+void store_four_bgr(const FilterRow& row, int x, __m128i low, __m128i high) noexcept {
+    const __m128i half = _mm_set1_epi16(poisson_disk_tap_count / 2);
+    low = _mm_srli_epi16(_mm_add_epi16(low, half), tap_shift);
+    high = _mm_srli_epi16(_mm_add_epi16(high, half), tap_shift);
+    const __m128i weights = _mm_setr_epi16(grey_weight_b, grey_weight_g, grey_weight_r, 0,
+                                           grey_weight_b, grey_weight_g, grey_weight_r, 0);
+    // 32-bit lanes b*wb + g*wg, r*wr per pixel; even lanes of both, plus odd lanes of both.
+    const __m128 products_low = _mm_castsi128_ps(_mm_madd_epi16(low, weights));
+    const __m128 products_high = _mm_castsi128_ps(_mm_madd_epi16(high, weights));
+    const __m128i blue_green =
+        _mm_castps_si128(_mm_shuffle_ps(products_low, products_high, _MM_SHUFFLE(2, 0, 2, 0)));
+    const __m128i red =
+        _mm_castps_si128(_mm_shuffle_ps(products_low, products_high, _MM_SHUFFLE(3, 1, 3, 1)));
+    __m128i grey =
+        _mm_add_epi32(_mm_add_epi32(blue_green, red), _mm_set1_epi32(1 << (grey_shift - 1)));
+    grey = _mm_srli_epi32(grey, grey_shift);
+    grey = _mm_packs_epi32(grey, grey);
+    grey = _mm_packus_epi16(grey, grey);
+    const int grey_bytes = _mm_cvtsi128_si32(grey);
+    std::memcpy(row.grey + x, &grey_bytes, 4);
+    alignas(16) std::uint8_t pixels[16];
+    _mm_store_si128(reinterpret_cast<__m128i*>(pixels), _mm_packus_epi16(low, high));
+    for (int k = 0; k < 4; ++k)
+        std::memcpy(row.color + (x + k) * 3, pixels + 4 * k, 4);
+}
+
+}  // namespace
+
+// Four working pixels a step: each tap's B, G, R (and the next pixel's B, ignored) are one
+// 32-bit load widened to 16-bit lanes; 16 taps x 255 fit in 16 bits. The interior has a
+// column to spare on the right, so the 4th byte is inside the frame.
+int filter_bgr_sse2(const FilterRow& row) noexcept {
+    const __m128i zero = _mm_setzero_si128();
+    int x = row.begin;
+    for (; x + 4 <= row.end && x + 4 < row.width; x += 4) {
+        const int* centre = row.centre_bytes + x;
+        __m128i low = zero;   // pixels x, x+1
+        __m128i high = zero;  // pixels x+2, x+3
+        for (int t = 0; t < poisson_disk_tap_count; ++t) {
+            const std::uint8_t* tap = row.taps[t];
+            const __m128i packed = _mm_setr_epi32(load32(tap + centre[0]), load32(tap + centre[1]),
+                                                  load32(tap + centre[2]), load32(tap + centre[3]));
+            low = _mm_add_epi16(low, _mm_unpacklo_epi8(packed, zero));
+            high = _mm_add_epi16(high, _mm_unpackhi_epi8(packed, zero));
+        }
+        store_four_bgr(row, x, low, high);
+    }
+    return x;
+}
+
+// Even centres: a tap's Y is the first or the second of its pair for every working pixel
+// alike, so whole Y0 U Y1 V groups are summed split by the tap's parity, the Y picked at the end.
+int filter_yuyv_sse2(const FilterRow& row) noexcept {
+    const __m128i zero = _mm_setzero_si128();
+    int x = row.begin;
+    for (; x + 4 <= row.end; x += 4) {
+        const int* centre = row.centre_bytes + x;
+        __m128i even_low = zero, even_high = zero, odd_low = zero, odd_high = zero;
+        for (int t = 0; t < poisson_disk_tap_count; ++t) {
+            const std::uint8_t* tap = row.taps[t];
+            const __m128i packed = _mm_setr_epi32(load32(tap + centre[0]), load32(tap + centre[1]),
+                                                  load32(tap + centre[2]), load32(tap + centre[3]));
+            const __m128i low = _mm_unpacklo_epi8(packed, zero);
+            const __m128i high = _mm_unpackhi_epi8(packed, zero);
+            if (row.tap_odd[t] != 0) {
+                odd_low = _mm_add_epi16(odd_low, low);
+                odd_high = _mm_add_epi16(odd_high, high);
+            } else {
+                even_low = _mm_add_epi16(even_low, low);
+                even_high = _mm_add_epi16(even_high, high);
+            }
+        }
+        alignas(16) std::uint16_t even[16];
+        alignas(16) std::uint16_t odd[16];
+        _mm_store_si128(reinterpret_cast<__m128i*>(even), even_low);
+        _mm_store_si128(reinterpret_cast<__m128i*>(even + 8), even_high);
+        _mm_store_si128(reinterpret_cast<__m128i*>(odd), odd_low);
+        _mm_store_si128(reinterpret_cast<__m128i*>(odd + 8), odd_high);
+        for (int k = 0; k < 4; ++k) {
+            const int lane = 4 * k;  // Y0 U Y1 V of pixel k
+            store_yuv(row.color, row.grey, x + k, even[lane] + odd[lane + 2],
+                      even[lane + 1] + odd[lane + 1], even[lane + 3] + odd[lane + 3]);
+        }
+    }
+    return x;
+}
+
+// Eight working pixels a step, each tap's eight 32-bit groups in one gather. 128-bit lane 0
+// of `low` holds pixels 0-1, lane 1 pixels 4-5; `high` holds 2-3 and 6-7.
+__attribute__((target("avx2"))) int filter_bgr_avx2(const FilterRow& row) noexcept {
+    const __m256i zero = _mm256_setzero_si256();
+    const __m256i half = _mm256_set1_epi16(poisson_disk_tap_count / 2);
+    const __m256i weights =
+        _mm256_setr_epi16(grey_weight_b, grey_weight_g, grey_weight_r, 0, grey_weight_b,
+                          grey_weight_g, grey_weight_r, 0, grey_weight_b, grey_weight_g,
+                          grey_weight_r, 0, grey_weight_b, grey_weight_g, grey_weight_r, 0);
+    const __m256i grey_round = _mm256_set1_epi32(1 << (grey_shift - 1));
+    // B G R X x 4 -> B G R x 4, per 128-bit lane.
+    const __m256i drop_fourth =
+        _mm256_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1, 0, 1, 2, 4, 5, 6,
+                         8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
+    int x = row.begin;
+    // The second 16-byte colour store spills 4 bytes into columns x + 8 and x + 9.
+    for (; x + 8 <= row.end && x + 10 <= row.width; x += 8) {
+        const __m256i index =
+            _mm256_loadu_si256(reinterpret_cast<const __m256i*>(row.centre_bytes + x));
+        __m256i low = zero;
+        __m256i high = zero;
+        for (int t = 0; t < poisson_disk_tap_count; ++t) {
+            const __m256i packed =
+                _mm256_i32gather_epi32(reinterpret_cast<const int*>(row.taps[t]), index, 1);
+            low = _mm256_add_epi16(low, _mm256_unpacklo_epi8(packed, zero));
+            high = _mm256_add_epi16(high, _mm256_unpackhi_epi8(packed, zero));
+        }
+        low = _mm256_srli_epi16(_mm256_add_epi16(low, half), tap_shift);
+        high = _mm256_srli_epi16(_mm256_add_epi16(high, half), tap_shift);
+        // Per 128-bit lane: pixels 0-3 (lane 1: 4-7) in order.
+        __m256i grey =
+            _mm256_hadd_epi32(_mm256_madd_epi16(low, weights), _mm256_madd_epi16(high, weights));
+        grey = _mm256_srli_epi32(_mm256_add_epi32(grey, grey_round), grey_shift);
+        grey = _mm256_packus_epi32(grey, grey);
+        grey = _mm256_packus_epi16(grey, grey);
+        const int grey_first = _mm256_cvtsi256_si32(grey);
+        const int grey_second = _mm256_extract_epi32(grey, 4);
+        std::memcpy(row.grey + x, &grey_first, 4);
+        std::memcpy(row.grey + x + 4, &grey_second, 4);
+        const __m256i bytes = _mm256_shuffle_epi8(_mm256_packus_epi16(low, high), drop_fourth);
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(row.color + x * 3),
+                         _mm256_castsi256_si128(bytes));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(row.color + x * 3 + 12),
+                         _mm256_extracti128_si256(bytes, 1));
+    }
+    return x;
+}
+
+__attribute__((target("avx2"))) int filter_yuyv_avx2(const FilterRow& row) noexcept {
+    const __m256i zero = _mm256_setzero_si256();
+    int x = row.begin;
+    for (; x + 8 <= row.end; x += 8) {
+        const __m256i index =
+            _mm256_loadu_si256(reinterpret_cast<const __m256i*>(row.centre_bytes + x));
+        __m256i even_low = zero, even_high = zero, odd_low = zero, odd_high = zero;
+        for (int t = 0; t < poisson_disk_tap_count; ++t) {
+            const __m256i packed =
+                _mm256_i32gather_epi32(reinterpret_cast<const int*>(row.taps[t]), index, 1);
+            const __m256i low = _mm256_unpacklo_epi8(packed, zero);
+            const __m256i high = _mm256_unpackhi_epi8(packed, zero);
+            if (row.tap_odd[t] != 0) {
+                odd_low = _mm256_add_epi16(odd_low, low);
+                odd_high = _mm256_add_epi16(odd_high, high);
+            } else {
+                even_low = _mm256_add_epi16(even_low, low);
+                even_high = _mm256_add_epi16(even_high, high);
+            }
+        }
+        alignas(32) std::uint16_t even[2][16];
+        alignas(32) std::uint16_t odd[2][16];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(even[0]), even_low);
+        _mm256_store_si256(reinterpret_cast<__m256i*>(even[1]), even_high);
+        _mm256_store_si256(reinterpret_cast<__m256i*>(odd[0]), odd_low);
+        _mm256_store_si256(reinterpret_cast<__m256i*>(odd[1]), odd_high);
+        for (int k = 0; k < 8; ++k) {
+            // Pixel k: low/high by bit 1, 128-bit lane by bit 2, pair member by bit 0.
+            const int half = (k >> 1) & 1;
+            const int lane = ((k >> 2) & 1) * 8 + (k & 1) * 4;
+            const std::uint16_t* e = even[half] + lane;
+            const std::uint16_t* o = odd[half] + lane;
+            store_yuv(row.color, row.grey, x + k, e[0] + o[2], e[1] + o[1], e[3] + o[3]);
+        }
+    }
+    return x;
+}
+
+#else
+
+int filter_bgr_sse2(const FilterRow& row) noexcept {
+    return row.begin;
+}
+int filter_yuyv_sse2(const FilterRow& row) noexcept {
+    return row.begin;
+}
+int filter_bgr_avx2(const FilterRow& row) noexcept {
+    return row.begin;
+}
+int filter_yuyv_avx2(const FilterRow& row) noexcept {
+    return row.begin;
+}
+
+#endif
+
+}  // namespace detail
+}  // namespace raypoint::core
