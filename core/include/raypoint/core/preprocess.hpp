@@ -70,7 +70,6 @@ class Preprocessor {
     template <int Channels>
     void compute_edges_of(const cv::Mat& source) noexcept;
     void compute_difference() noexcept;
-    double compensate(cv::Mat& difference) noexcept;
 
     PreprocessSettings settings_;
     InstructionSet instructions_;
@@ -105,8 +104,10 @@ class Preprocessor {
     cv::Mat magnitude_;
     cv::Mat edges_;
     cv::Mat difference_;
-    cv::Mat color_difference_;
-    cv::Mat channel_difference_;
+    std::vector<std::uint8_t> channel_row_;  // a row of channel differences, then their maxima
+    // Histograms of the grey and the per-channel difference, four interleaved partial ones each.
+    std::array<std::array<int, 256>, 4> grey_bins_{};
+    std::array<std::array<int, 256>, 4> channel_bins_{};
     double movement_ = 0.0;
     int offset_ = 0;
 };
