@@ -45,6 +45,14 @@ int load32(const std::uint8_t* at) noexcept {
     return value;
 }
 
+void store32(std::uint8_t* at, int value) noexcept {
+    std::memcpy(at, &value, 4);
+}
+
+void store64(std::uint8_t* at, long long value) noexcept {
+    std::memcpy(at, &value, 8);
+}
+
 // Four BGR(X) tap sums, pixels 0-1 in `low` and 2-3 in `high` (16-bit lanes B G R X), to
 // their means and grey. A pixel is stored as 4 bytes whose 4th the next one overwrites: the
 // last spills into column x + 4, which the caller guarantees exists and is written later.
@@ -57,21 +65,30 @@ void store_four_bgr(const FilterRow& row, int x, __m128i low, __m128i high) noex
     // 32-bit lanes b*wb + g*wg, r*wr per pixel; even lanes of both, plus odd lanes of both.
     const __m128 products_low = _mm_castsi128_ps(_mm_madd_epi16(low, weights));
     const __m128 products_high = _mm_castsi128_ps(_mm_madd_epi16(high, weights));
-    const __m128i blue_green =
+    const __m128i weighted_blue_green =
         _mm_castps_si128(_mm_shuffle_ps(products_low, products_high, _MM_SHUFFLE(2, 0, 2, 0)));
-    const __m128i red =
+    const __m128i weighted_red =
         _mm_castps_si128(_mm_shuffle_ps(products_low, products_high, _MM_SHUFFLE(3, 1, 3, 1)));
-    __m128i grey =
-        _mm_add_epi32(_mm_add_epi32(blue_green, red), _mm_set1_epi32(1 << (grey_shift - 1)));
+    __m128i grey = _mm_add_epi32(_mm_add_epi32(weighted_blue_green, weighted_red),
+                                 _mm_set1_epi32(1 << (grey_shift - 1)));
     grey = _mm_srli_epi32(grey, grey_shift);
     grey = _mm_packs_epi32(grey, grey);
     grey = _mm_packus_epi16(grey, grey);
-    const int grey_bytes = _mm_cvtsi128_si32(grey);
-    std::memcpy(row.grey + x, &grey_bytes, 4);
+    store32(row.out.grey + x, _mm_cvtsi128_si32(grey));
+    const __m128i bytes = _mm_packus_epi16(low, high);  // B G R X of pixels 0-3
     alignas(16) std::uint8_t pixels[16];
-    _mm_store_si128(reinterpret_cast<__m128i*>(pixels), _mm_packus_epi16(low, high));
+    _mm_store_si128(reinterpret_cast<__m128i*>(pixels), bytes);
     for (int k = 0; k < 4; ++k)
-        std::memcpy(row.color + (x + k) * 3, pixels + 4 * k, 4);
+        std::memcpy(row.out.color + (x + k) * 3, pixels + 4 * k, 4);
+    // Planes: each channel's byte of the four 32-bit pixels, packed down to four bytes.
+    const __m128i byte_mask = _mm_set1_epi32(0xFF);
+    const __m128i blue_green = _mm_packs_epi32(_mm_and_si128(bytes, byte_mask),
+                                               _mm_and_si128(_mm_srli_epi32(bytes, 8), byte_mask));
+    const __m128i red = _mm_and_si128(_mm_srli_epi32(bytes, 16), byte_mask);
+    const __m128i planes = _mm_packus_epi16(blue_green, _mm_packs_epi32(red, red));
+    store32(row.out.blue + x, _mm_cvtsi128_si32(planes));
+    store32(row.out.green + x, _mm_cvtsi128_si32(_mm_srli_si128(planes, 4)));
+    store32(row.out.red + x, _mm_cvtsi128_si32(_mm_srli_si128(planes, 8)));
 }
 
 }  // namespace
@@ -128,8 +145,8 @@ int filter_yuyv_sse2(const FilterRow& row) noexcept {
         _mm_store_si128(reinterpret_cast<__m128i*>(odd + 8), odd_high);
         for (int k = 0; k < 4; ++k) {
             const int lane = 4 * k;  // Y0 U Y1 V of pixel k
-            store_yuv(row.color, row.grey, x + k, even[lane] + odd[lane + 2],
-                      even[lane + 1] + odd[lane + 1], even[lane + 3] + odd[lane + 3]);
+            store_yuv(row.out, x + k, even[lane] + odd[lane + 2], even[lane + 1] + odd[lane + 1],
+                      even[lane + 3] + odd[lane + 3]);
         }
     }
     return x;
@@ -149,6 +166,9 @@ __attribute__((target("avx2"))) int filter_bgr_avx2(const FilterRow& row) noexce
     const __m256i drop_fourth =
         _mm256_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1, 0, 1, 2, 4, 5, 6,
                          8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
+    const __m256i to_planes =
+        _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, -1, -1, -1, -1, 0, 4, 8, 12, 1, 5,
+                         9, 13, 2, 6, 10, 14, -1, -1, -1, -1);
     int x = row.begin;
     // The second 16-byte colour store spills 4 bytes into columns x + 8 and x + 9.
     for (; x + 8 <= row.end && x + 10 <= row.width; x += 8) {
@@ -170,15 +190,20 @@ __attribute__((target("avx2"))) int filter_bgr_avx2(const FilterRow& row) noexce
         grey = _mm256_srli_epi32(_mm256_add_epi32(grey, grey_round), grey_shift);
         grey = _mm256_packus_epi32(grey, grey);
         grey = _mm256_packus_epi16(grey, grey);
-        const int grey_first = _mm256_cvtsi256_si32(grey);
-        const int grey_second = _mm256_extract_epi32(grey, 4);
-        std::memcpy(row.grey + x, &grey_first, 4);
-        std::memcpy(row.grey + x + 4, &grey_second, 4);
-        const __m256i bytes = _mm256_shuffle_epi8(_mm256_packus_epi16(low, high), drop_fourth);
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(row.color + x * 3),
+        store32(row.out.grey + x, _mm256_cvtsi256_si32(grey));
+        store32(row.out.grey + x + 4, _mm256_extract_epi32(grey, 4));
+        const __m256i pixels = _mm256_packus_epi16(low, high);
+        const __m256i bytes = _mm256_shuffle_epi8(pixels, drop_fourth);
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(row.out.color + x * 3),
                          _mm256_castsi256_si128(bytes));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(row.color + x * 3 + 12),
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(row.out.color + x * 3 + 12),
                          _mm256_extracti128_si256(bytes, 1));
+        // Planes: per 128-bit lane B0-3 G0-3 R0-3, then the two lanes' dwords side by side.
+        const __m256i planes = _mm256_permutevar8x32_epi32(
+            _mm256_shuffle_epi8(pixels, to_planes), _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7));
+        store64(row.out.blue + x, _mm256_extract_epi64(planes, 0));
+        store64(row.out.green + x, _mm256_extract_epi64(planes, 1));
+        store64(row.out.red + x, _mm256_extract_epi64(planes, 2));
     }
     return x;
 }
@@ -215,7 +240,7 @@ __attribute__((target("avx2"))) int filter_yuyv_avx2(const FilterRow& row) noexc
             const int lane = ((k >> 2) & 1) * 8 + (k & 1) * 4;
             const std::uint16_t* e = even[half] + lane;
             const std::uint16_t* o = odd[half] + lane;
-            store_yuv(row.color, row.grey, x + k, e[0] + o[2], e[1] + o[1], e[3] + o[3]);
+            store_yuv(row.out, x + k, e[0] + o[2], e[1] + o[1], e[3] + o[3]);
         }
     }
     return x;

@@ -27,6 +27,26 @@ constexpr std::uint8_t grey_of(unsigned b, unsigned g, unsigned r) noexcept {
         grey_shift);
 }
 
+// One row of the working images the filter writes: interleaved BGR, grey, and B, G, R apart
+// (the planes keep the Sobel loops contiguous).
+struct FilterOutput {
+    std::uint8_t* color;
+    std::uint8_t* grey;
+    std::uint8_t* blue;
+    std::uint8_t* green;
+    std::uint8_t* red;
+
+    void store(int x, unsigned b, unsigned g, unsigned r) const noexcept {
+        color[x * 3 + 0] = static_cast<std::uint8_t>(b);
+        color[x * 3 + 1] = static_cast<std::uint8_t>(g);
+        color[x * 3 + 2] = static_cast<std::uint8_t>(r);
+        blue[x] = static_cast<std::uint8_t>(b);
+        green[x] = static_cast<std::uint8_t>(g);
+        red[x] = static_cast<std::uint8_t>(r);
+        grey[x] = grey_of(b, g, r);
+    }
+};
+
 // One working row's interior, where no tap needs clamping.
 struct FilterRow {
     // Per tap, its input row with the tap's column shift applied (BGR: dx * 3 bytes; YUYV with
@@ -37,8 +57,7 @@ struct FilterRow {
     int begin;                     // first working column to do
     int end;                       // one past the last interior column
     int width;                     // working width: stores may spill into columns still to come
-    std::uint8_t* color;           // BGR row of the working image
-    std::uint8_t* grey;            // its grey row
+    FilterOutput out;
 };
 
 // Each returns the first working column it left undone (a multiple of its step from begin).
@@ -49,8 +68,8 @@ int filter_yuyv_avx2(const FilterRow& row) noexcept;
 
 // YUYV sums of 16 taps, Y from each tap's own pixel, U and V from its pair, to a BGR pixel and
 // its grey: averaged as YUV, then BT.601 limited range, the usual meaning of V4L2's YUYV.
-inline void store_yuv(std::uint8_t* color, std::uint8_t* grey, int x, unsigned sum_y,
-                      unsigned sum_u, unsigned sum_v) noexcept {
+inline void store_yuv(const FilterOutput& out, int x, unsigned sum_y, unsigned sum_u,
+                      unsigned sum_v) noexcept {
     const auto clamp_byte = [](int value) {
         return static_cast<unsigned>(value < 0 ? 0 : (value > 255 ? 255 : value));
     };
@@ -61,21 +80,12 @@ inline void store_yuv(std::uint8_t* color, std::uint8_t* grey, int x, unsigned s
     const unsigned b = clamp_byte((scaled + 516 * u) >> 8);
     const unsigned g = clamp_byte((scaled - 100 * u - 208 * v) >> 8);
     const unsigned r = clamp_byte((scaled + 409 * v) >> 8);
-    color[x * 3 + 0] = static_cast<std::uint8_t>(b);
-    color[x * 3 + 1] = static_cast<std::uint8_t>(g);
-    color[x * 3 + 2] = static_cast<std::uint8_t>(r);
-    grey[x] = grey_of(b, g, r);
+    out.store(x, b, g, r);
 }
 
-inline void store_bgr(std::uint8_t* color, std::uint8_t* grey, int x, unsigned sum_b,
-                      unsigned sum_g, unsigned sum_r) noexcept {
-    const unsigned b = tap_mean(sum_b);
-    const unsigned g = tap_mean(sum_g);
-    const unsigned r = tap_mean(sum_r);
-    color[x * 3 + 0] = static_cast<std::uint8_t>(b);
-    color[x * 3 + 1] = static_cast<std::uint8_t>(g);
-    color[x * 3 + 2] = static_cast<std::uint8_t>(r);
-    grey[x] = grey_of(b, g, r);
+inline void store_bgr(const FilterOutput& out, int x, unsigned sum_b, unsigned sum_g,
+                      unsigned sum_r) noexcept {
+    out.store(x, tap_mean(sum_b), tap_mean(sum_g), tap_mean(sum_r));
 }
 
 }  // namespace raypoint::core::detail

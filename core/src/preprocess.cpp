@@ -102,7 +102,7 @@ Preprocessor::Preprocessor(const PreprocessSettings& settings, InstructionSet in
         gray_[i].setTo(cv::Scalar::all(0));
     }
     squared_channels_.resize(static_cast<std::size_t>(settings.work_width) * 3);
-    strongest_.resize(static_cast<std::size_t>(settings.work_width));
+    planes_.create(settings.work_height * 3, settings.work_width, CV_8U);
     magnitude_.create(size, CV_8U);
     edges_.create(size, CV_8U);
     difference_.create(size, CV_8U);

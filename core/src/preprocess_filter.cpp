@@ -17,12 +17,9 @@ namespace raypoint::core {
 // taps inside, so the sums stay in registers; the interior skips the clamped column tables
 // and runs in the vector kernels of filter_kernels.cpp.
 void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
-    cv::Mat& out = color_[current_];
-    cv::Mat& grey = gray_[current_];
     for (int y = 0; y < settings_.work_height; ++y) {
         start_row(frame, y);
-        auto* target = out.ptr<std::uint8_t>(y);
-        auto* grey_row = grey.ptr<std::uint8_t>(y);
+        const detail::FilterOutput target = output_row(y);
         const auto clamped = [&](int x) {
             unsigned b = 0, g = 0, r = 0;
             for (int t = 0; t < poisson_disk_tap_count; ++t) {
@@ -31,7 +28,7 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
                 g += pixel[1];
                 r += pixel[2];
             }
-            detail::store_bgr(target, grey_row, x, b, g, r);
+            detail::store_bgr(target, x, b, g, r);
         };
         int x = 0;
         for (; x < interior_begin_; ++x)
@@ -43,8 +40,7 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
                                     x,
                                     interior_end_,
                                     settings_.work_width,
-                                    target,
-                                    grey_row};
+                                    target};
         switch (instructions_) {
             case InstructionSet::avx2:
                 x = detail::filter_bgr_avx2(row);
@@ -63,13 +59,20 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
                 g += pixel[1];
                 r += pixel[2];
             }
-            detail::store_bgr(target, grey_row, x, b, g, r);
+            detail::store_bgr(target, x, b, g, r);
         }
         shift_taps(-1);
         for (x = std::max(interior_end_, interior_begin_); x < settings_.work_width; ++x) {
             clamped(x);
         }
     }
+}
+
+detail::FilterOutput Preprocessor::output_row(int y) noexcept {
+    const int height = settings_.work_height;
+    return {color_[current_].ptr<std::uint8_t>(y), gray_[current_].ptr<std::uint8_t>(y),
+            planes_.ptr<std::uint8_t>(y), planes_.ptr<std::uint8_t>(height + y),
+            planes_.ptr<std::uint8_t>(2 * height + y)};
 }
 
 // Moves every tap's row pointer by its column shift (sign 1) or back (-1): the interior
@@ -112,12 +115,9 @@ void Preprocessor::prefetch_rows(const FrameView& frame, int next_y) const noexc
 // (detail::store_yuv). The vector kernels need every interior centre even (integer scales:
 // 640, 1280, 1920 wide to 160), so a tap's Y is at the same place of its pair for all.
 void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
-    cv::Mat& out = color_[current_];
-    cv::Mat& grey = gray_[current_];
     for (int y = 0; y < settings_.work_height; ++y) {
         start_row(frame, y);
-        auto* target = out.ptr<std::uint8_t>(y);
-        auto* grey_row = grey.ptr<std::uint8_t>(y);
+        const detail::FilterOutput target = output_row(y);
         const auto clamped = [&](int x) {
             unsigned sum_y = 0, sum_u = 0, sum_v = 0;
             for (int t = 0; t < poisson_disk_tap_count; ++t) {
@@ -127,7 +127,7 @@ void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
                 sum_u += pair[1];
                 sum_v += pair[3];
             }
-            detail::store_yuv(target, grey_row, x, sum_y, sum_u, sum_v);
+            detail::store_yuv(target, x, sum_y, sum_u, sum_v);
         };
         int x = 0;
         if (uniform_parity_) {
@@ -140,8 +140,7 @@ void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
                                         x,
                                         interior_end_,
                                         settings_.work_width,
-                                        target,
-                                        grey_row};
+                                        target};
             switch (instructions_) {
                 case InstructionSet::avx2:
                     x = detail::filter_yuyv_avx2(row);

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -121,6 +122,49 @@ TEST(FilterReference, YuyvMatchesExactly) {
     for (const cv::Size size : {cv::Size(640, 480), cv::Size(1280, 720), cv::Size(642, 482),
                                 cv::Size(320, 240), cv::Size(1920, 1080)}) {
         expect_matches_reference(size, PixelFormat::yuyv);
+    }
+}
+
+// The edge and difference images too: two frames through each instruction set, for both edge
+// and movement sources, against the scalar path.
+TEST(FilterReference, EveryInstructionSetGivesTheSameImages) {
+    const cv::Size size(640, 480);
+    std::vector<cv::Mat> frames(2, cv::Mat(size, CV_8UC3));
+    for (auto& frame : frames) {
+        frame = cv::Mat(size, CV_8UC3);
+        cv::randu(frame, 0, 256);
+        cv::GaussianBlur(frame, frame, {0, 0}, 2.0);  // random noise alone has no edges to keep
+    }
+    for (const auto source :
+         {raypoint::core::EdgeSource::luma, raypoint::core::EdgeSource::max_channel}) {
+        PreprocessSettings settings;
+        settings.edge_source = source;
+        settings.movement_source = source;
+        settings.edge_threshold = 8;
+        std::vector<std::unique_ptr<Preprocessor>> runs;
+        for (const InstructionSet set : runnable_sets()) {
+            runs.push_back(std::make_unique<Preprocessor>(settings, set));
+            for (const auto& frame : frames) {
+                ASSERT_TRUE(runs.back()->process(FrameView{frame.data, size.width, size.height,
+                                                           static_cast<int>(frame.step),
+                                                           PixelFormat::bgr, 0}));
+            }
+        }
+        const Preprocessor& scalar = *runs.front();
+        ASSERT_GT(cv::countNonZero(scalar.edges()), 100);
+        ASSERT_GT(cv::countNonZero(scalar.difference()), 100);
+        for (std::size_t i = 1; i < runs.size(); ++i) {
+            const std::string where(to_string(runnable_sets()[i]));
+            for (const auto& [mine, theirs] :
+                 {std::pair{&runs[i]->magnitude(), &scalar.magnitude()},
+                  std::pair{&runs[i]->edges(), &scalar.edges()},
+                  std::pair{&runs[i]->difference(), &scalar.difference()}}) {
+                cv::Mat difference;
+                cv::absdiff(*mine, *theirs, difference);
+                EXPECT_EQ(cv::countNonZero(difference), 0) << where;
+            }
+            EXPECT_EQ(runs[i]->movement(), scalar.movement()) << where;
+        }
     }
 }
 

@@ -13,6 +13,9 @@
 #include "raypoint/core/settings.hpp"
 
 namespace raypoint::core {
+namespace detail {
+struct FilterOutput;
+}
 
 // The Poisson-disk filter's tap count: a power of two, so the taps' mean is a shift.
 inline constexpr int poisson_disk_tap_count = 16;
@@ -65,10 +68,9 @@ class Preprocessor {
     void filter_yuyv(const FrameView& frame) noexcept;
     void start_row(const FrameView& frame, int y) noexcept;
     void shift_taps(int sign) noexcept;
+    detail::FilterOutput output_row(int y) noexcept;
     void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
     void compute_edges() noexcept;
-    template <int Channels>
-    void compute_edges_of(const cv::Mat& source) noexcept;
     void compute_difference() noexcept;
 
     PreprocessSettings settings_;
@@ -95,10 +97,10 @@ class Preprocessor {
     int interior_end_ = 0;
     std::vector<const std::uint8_t*> tap_row_pointers_;
     std::vector<int> squared_channels_;  // one row of squared Sobel magnitudes, per channel
-    std::vector<float> strongest_;       // one row: the strongest channel's
     std::vector<int> last_tap_row_;      // per working row, the lowest input row a tap reads
     std::array<cv::Mat, 2> color_;
     std::array<cv::Mat, 2> gray_;
+    cv::Mat planes_;  // the current colour image's B, G and R planes, one above the other
     int current_ = 0;
     long processed_ = 0;
     cv::Mat magnitude_;
