@@ -174,6 +174,13 @@ void Preprocessor::prepare(const FrameView& frame) {
 }
 
 bool Preprocessor::process(const FrameView& frame) noexcept {
+    if (!filter(frame)) return false;
+    compute_edges();
+    compute_difference();
+    return true;
+}
+
+bool Preprocessor::filter(const FrameView& frame) noexcept {
     const int bytes_per_pixel = frame.format == PixelFormat::bgr ? 3 : 2;
     if (frame.data == nullptr || frame.width < settings_.work_width ||
         frame.height < settings_.work_height || frame.stride < frame.width * bytes_per_pixel ||
@@ -198,9 +205,7 @@ bool Preprocessor::process(const FrameView& frame) noexcept {
             filter_yuyv(frame);
             break;
     }
-    compute_edges();
     ++processed_;
-    compute_difference();
     return true;
 }
 

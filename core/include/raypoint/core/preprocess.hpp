@@ -48,6 +48,14 @@ class Preprocessor {
     // small, smaller than the working size): the frame is skipped, nothing changes.
     bool process(const FrameView& frame) noexcept;
 
+    // process() is these three stages in order; they are public for the per-stage benchmarks
+    // (core/perf) and do nothing else apart. filter() takes the frame as above (Poisson-disk
+    // filter and subsampling to the colour, grey and channel images); the other two recompute
+    // their images from the last filtered ones, so repeating them changes nothing.
+    bool filter(const FrameView& frame) noexcept;
+    void compute_edges() noexcept;
+    void compute_difference() noexcept;
+
     const cv::Mat& color() const noexcept { return color_[current_]; }  // CV_8UC3
     const cv::Mat& previous_color() const noexcept { return color_[1 - current_]; }
     const cv::Mat& gray() const noexcept { return gray_[current_]; }  // CV_8U
@@ -70,8 +78,6 @@ class Preprocessor {
     void shift_taps(int sign) noexcept;
     detail::FilterOutput output_row(int y) noexcept;
     void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
-    void compute_edges() noexcept;
-    void compute_difference() noexcept;
 
     PreprocessSettings settings_;
     InstructionSet instructions_;
