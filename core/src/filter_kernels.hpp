@@ -50,7 +50,7 @@ struct FilterOutput {
 // One working row's interior, where no tap needs clamping.
 struct FilterRow {
     // Per tap, its input row with the tap's column shift applied (BGR: dx * 3 bytes; YUYV with
-    // even centres: (dx & ~1) * 2 bytes, the start of the tap's Y0 U Y1 V group).
+    // centres of parity p: ((p + dx) & ~1) * 2 bytes, the start of the tap's Y0 U Y1 V group).
     const std::uint8_t* const* taps;
     const int* centre_bytes;       // per working column, the byte offset of its centre (group)
     const unsigned char* tap_odd;  // YUYV: 1 where the tap's Y is the second of its pair

@@ -157,17 +157,21 @@ void Preprocessor::prepare(const FrameView& frame) {
         }
     }
     if (interior_begin_ >= interior_end_) interior_begin_ = interior_end_ = 0;
+    // YUYV: with every interior centre of one parity p (even for 640, 1280, 1920 wide; odd
+    // for 320), column c + dx of centre c is in the pair starting at (c - p) + ((p + dx) & ~1)
+    // and its Y is the pair's second when p + dx is odd, the same for every centre.
+    const int parity = interior_begin_ < interior_end_ ? centre_columns_[interior_begin_] & 1 : 0;
     uniform_parity_ = true;
     for (int x = interior_begin_; x < interior_end_; ++x) {
-        if (centre_columns_[x] % 2 != 0) uniform_parity_ = false;
+        if ((centre_columns_[x] & 1) != parity) uniform_parity_ = false;
     }
     tap_odd_.assign(taps.size(), 0);
     tap_shift_bytes_.assign(taps.size(), 0);
     centre_bytes_.resize(static_cast<std::size_t>(settings_.work_width));
     const bool bgr = frame.format == PixelFormat::bgr;
     for (std::size_t t = 0; t < taps.size(); ++t) {
-        tap_odd_[t] = (tap_dx_[t] & 1) != 0 ? 1 : 0;
-        tap_shift_bytes_[t] = bgr ? tap_dx_[t] * 3 : (tap_dx_[t] & ~1) * 2;
+        tap_odd_[t] = ((parity + tap_dx_[t]) & 1) != 0 ? 1 : 0;
+        tap_shift_bytes_[t] = bgr ? tap_dx_[t] * 3 : ((parity + tap_dx_[t]) & ~1) * 2;
     }
     for (int x = 0; x < settings_.work_width; ++x)
         centre_bytes_[x] = bgr ? centre_columns_[x] * 3 : (centre_columns_[x] & ~1) * 2;

@@ -112,8 +112,8 @@ void Preprocessor::prefetch_rows(const FrameView& frame, int next_y) const noexc
 }
 
 // YUYV: Y from the pixel itself, U and V from its pair; averaged as YUV, then converted to BGR
-// (detail::store_yuv). The vector kernels need every interior centre even (integer scales:
-// 640, 1280, 1920 wide to 160), so a tap's Y is at the same place of its pair for all.
+// (detail::store_yuv). The vector kernels need every interior centre of one parity (integer
+// scales: 320, 640, 1280, 1920 wide to 160), so a tap's Y is at the same place of its pair.
 void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
     for (int y = 0; y < settings_.work_height; ++y) {
         start_row(frame, y);

@@ -95,8 +95,8 @@ class Preprocessor {
     // tap, the byte shift of its column from there (see detail::FilterRow).
     std::vector<int> centre_bytes_;
     std::vector<int> tap_shift_bytes_;
-    // YUYV: every interior working column's centre is even, so a tap's Y is at a fixed place
-    // in its pair (tap_odd_).
+    // YUYV: every interior working column's centre has the same parity, so a tap's Y is at a
+    // fixed place in its pair (tap_odd_).
     bool uniform_parity_ = false;
     std::vector<unsigned char> tap_odd_;
     int interior_begin_ = 0;
