@@ -34,23 +34,7 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
         for (; x < interior_begin_; ++x)
             clamped(x);
         shift_taps(1);
-        const detail::FilterRow row{tap_row_pointers_.data(),
-                                    centre_bytes_.data(),
-                                    tap_odd_.data(),
-                                    x,
-                                    interior_end_,
-                                    settings_.work_width,
-                                    target};
-        switch (instructions_) {
-            case InstructionSet::avx2:
-                x = detail::filter_bgr_avx2(row);
-                break;
-            case InstructionSet::sse2:
-                x = detail::filter_bgr_sse2(row);
-                break;
-            case InstructionSet::scalar:
-                break;
-        }
+        x = filter_interior(x, target);
         for (; x < interior_end_; ++x) {
             unsigned b = 0, g = 0, r = 0;
             for (int t = 0; t < poisson_disk_tap_count; ++t) {
@@ -73,6 +57,28 @@ detail::FilterOutput Preprocessor::output_row(int y) noexcept {
     return {color_[current_].ptr<std::uint8_t>(y), gray_[current_].ptr<std::uint8_t>(y),
             planes_.ptr<std::uint8_t>(y), planes_.ptr<std::uint8_t>(height + y),
             planes_.ptr<std::uint8_t>(2 * height + y)};
+}
+
+// The vector kernels over the interior from working column `begin` (the taps shifted);
+// returns the first column they left for the plain loops.
+int Preprocessor::filter_interior(int begin, const detail::FilterOutput& target) const noexcept {
+    const detail::FilterRow row{tap_row_pointers_.data(),
+                                centre_bytes_.data(),
+                                tap_odd_.data(),
+                                begin,
+                                interior_end_,
+                                settings_.work_width,
+                                target};
+    const bool bgr = input_format_ == PixelFormat::bgr;
+    switch (instructions_) {
+        case InstructionSet::avx2:
+            return bgr ? detail::filter_bgr_avx2(row) : detail::filter_yuyv_avx2(row);
+        case InstructionSet::sse2:
+            return bgr ? detail::filter_bgr_sse2(row) : detail::filter_yuyv_sse2(row);
+        case InstructionSet::scalar:
+            break;
+    }
+    return begin;
 }
 
 // Moves every tap's row pointer by its column shift (sign 1) or back (-1): the interior
@@ -134,23 +140,7 @@ void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
             for (; x < interior_begin_; ++x)
                 clamped(x);
             shift_taps(1);
-            const detail::FilterRow row{tap_row_pointers_.data(),
-                                        centre_bytes_.data(),
-                                        tap_odd_.data(),
-                                        x,
-                                        interior_end_,
-                                        settings_.work_width,
-                                        target};
-            switch (instructions_) {
-                case InstructionSet::avx2:
-                    x = detail::filter_yuyv_avx2(row);
-                    break;
-                case InstructionSet::sse2:
-                    x = detail::filter_yuyv_sse2(row);
-                    break;
-                case InstructionSet::scalar:
-                    break;
-            }
+            x = filter_interior(x, target);
             shift_taps(-1);
         }
         for (; x < settings_.work_width; ++x)

@@ -77,6 +77,7 @@ class Preprocessor {
     void start_row(const FrameView& frame, int y) noexcept;
     void shift_taps(int sign) noexcept;
     detail::FilterOutput output_row(int y) noexcept;
+    int filter_interior(int begin, const detail::FilterOutput& target) const noexcept;
     void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
 
     PreprocessSettings settings_;
