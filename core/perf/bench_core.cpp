@@ -1,123 +1,77 @@
-// Per-frame cost of the core: 640x480 in, preprocessing + estimation out (issue: <= 150 us).
-// Frames are drawn before timing; only Tracker/Preprocessor/Estimator calls are timed.
+// The whole core, frame in -> position out (Tracker::process), in the steady state of a
+// tracked target: every input size and format, each instruction set at 640x480, and the
+// estimator's n, y, m around the defaults at 640x480 BGR (issue 5: <= 150 us at 640x480).
 
 #include <benchmark/benchmark.h>
 
-#include <vector>
+#include <string>
 
-#include <opencv2/imgproc.hpp>
-
-#include "raypoint/core/preprocess.hpp"
+#include "bench_frames.hpp"
 #include "raypoint/core/tracker.hpp"
 
+namespace raypoint::bench {
 namespace {
 
-using raypoint::core::FrameView;
-using raypoint::core::PixelFormat;
+using core::InstructionSet;
 
-// A dark disk circling over a mildly textured light background, 30 fps.
-std::vector<cv::Mat> make_frames(cv::Size size, int count) {
-    std::vector<cv::Mat> frames;
-    cv::Mat background(size, CV_8UC3);
-    cv::randu(background, cv::Scalar::all(180), cv::Scalar::all(230));
-    cv::GaussianBlur(background, background, {0, 0}, 3.0);
-    for (int i = 0; i < count; ++i) {
-        cv::Mat frame = background.clone();
-        const double angle = i * 0.08;
-        const cv::Point centre(static_cast<int>(size.width * (0.5 + 0.2 * std::cos(angle))),
-                               static_cast<int>(size.height * (0.5 + 0.2 * std::sin(angle))));
-        cv::circle(frame, centre, size.height / 8, cv::Scalar(40, 30, 30), cv::FILLED, cv::LINE_AA);
-        frames.push_back(frame);
+constexpr int clip_frames = 32;
+
+// {width, height, format, instruction set, n, y, m}.
+void tracker_arguments(benchmark::internal::Benchmark* b) {
+    b->ArgNames({"w", "h", "yuyv", "isa", "n", "y", "m"});
+    const auto best = static_cast<long>(core::best_instruction_set());
+    const core::EstimatorSettings defaults;
+    const long n = defaults.rays;
+    const long y = defaults.recasts;
+    const long m = defaults.block_size;
+    for (const auto& size : input_sizes) {
+        for (const long format : {0L, 1L})
+            b->Args({size[0], size[1], format, best, n, y, m});
     }
-    return frames;
-}
-
-std::vector<cv::Mat> to_yuyv(const std::vector<cv::Mat>& frames) {
-    std::vector<cv::Mat> out;
-    for (const auto& bgr : frames) {
-        cv::Mat yuv;
-        cv::cvtColor(bgr, yuv, cv::COLOR_BGR2YUV);
-        cv::Mat packed(bgr.rows, bgr.cols * 2, CV_8U);
-        for (int y = 0; y < bgr.rows; ++y) {
-            const auto* in = yuv.ptr<cv::Vec3b>(y);
-            auto* row = packed.ptr<std::uint8_t>(y);
-            for (int x = 0; x < bgr.cols; x += 2) {
-                row[2 * x + 0] = in[x][0];
-                row[2 * x + 1] = static_cast<std::uint8_t>((in[x][1] + in[x + 1][1]) / 2);
-                row[2 * x + 2] = in[x + 1][0];
-                row[2 * x + 3] = static_cast<std::uint8_t>((in[x][2] + in[x + 1][2]) / 2);
-            }
-        }
-        out.push_back(packed);
+    for (long isa = 0; isa < best; ++isa) {
+        for (const long format : {0L, 1L})
+            b->Args({640, 480, format, isa, n, y, m});
     }
-    return out;
+    for (const long rays : {8L, 12L, 24L, 32L})
+        b->Args({640, 480, 0, best, rays, y, m});
+    for (const long levels : {1L, 3L})
+        b->Args({640, 480, 0, best, n, levels, m});
+    for (const long block : {4L, 16L})
+        b->Args({640, 480, 0, best, n, y, block});
 }
 
-FrameView view(const cv::Mat& frame, PixelFormat format, int width, long index) {
-    return {frame.data, width, frame.rows, static_cast<int>(frame.step), format, index * 33333};
-}
-
-void run_tracker(benchmark::State& state, PixelFormat format) {
-    const cv::Size size(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-    auto frames = make_frames(size, 64);
-    if (format == PixelFormat::yuyv) frames = to_yuyv(frames);
-    raypoint::core::Settings settings;
+void BM_Tracker(benchmark::State& state) {
+    const Clip clip({static_cast<int>(state.range(0)), static_cast<int>(state.range(1))},
+                    format_argument(state.range(2)), clip_frames);
+    core::Settings settings;
     settings.tracking.startup_seconds = 0.0;
-    raypoint::core::Tracker tracker(settings);
+    settings.estimator.rays = static_cast<int>(state.range(4));
+    settings.estimator.recasts = static_cast<int>(state.range(5));
+    settings.estimator.block_size = static_cast<int>(state.range(6));
+    const auto instructions = static_cast<InstructionSet>(state.range(3));
+    core::Tracker tracker(settings, instructions);
     long index = 0;
     // Warm up into TRACKING, so the timed frames are the steady state of a tracked target.
-    for (int i = 0; i < 32; ++i, ++index) {
-        tracker.process(view(frames[index % frames.size()], format, size.width, index));
-    }
+    for (; index < clip_frames; ++index)
+        tracker.process(clip.view(index));
+    long tracked = 0;
     for (auto _ : state) {
-        const auto result =
-            tracker.process(view(frames[index % frames.size()], format, size.width, index));
+        const core::FrameResult result = tracker.process(clip.view(index++));
+        tracked += result.has_position ? 1 : 0;
         benchmark::DoNotOptimize(result);
-        ++index;
     }
+    state.SetLabel(std::string(format_name(clip.view(0).format)) + " " +
+                   std::string(core::to_string(instructions)));
+    state.counters["tracked"] =
+        static_cast<double>(tracked) / static_cast<double>(state.iterations());
     state.counters["fps"] =
         benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
-void BM_TrackerBgr(benchmark::State& state) {
-    run_tracker(state, PixelFormat::bgr);
-}
-void BM_TrackerYuyv(benchmark::State& state) {
-    run_tracker(state, PixelFormat::yuyv);
-}
-
-void BM_Preprocess(benchmark::State& state) {
-    const cv::Size size(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-    const auto frames = make_frames(size, 8);
-    raypoint::core::Preprocessor preprocessor{raypoint::core::PreprocessSettings{}};
-    long index = 0;
-    for (auto _ : state) {
-        benchmark::DoNotOptimize(preprocessor.process(
-            view(frames[index % frames.size()], PixelFormat::bgr, size.width, index)));
-        ++index;
-    }
-}
-
-void BM_Estimator(benchmark::State& state) {
-    raypoint::core::EstimatorSettings settings;
-    settings.kind = static_cast<raypoint::core::EstimatorKind>(state.range(0));
-    const auto frames = make_frames({640, 480}, 1);
-    raypoint::core::Preprocessor preprocessor{raypoint::core::PreprocessSettings{}};
-    preprocessor.process(view(frames[0], PixelFormat::bgr, 640, 0));
-    auto estimator = raypoint::core::make_estimator(settings);
-    // Start 4 px off the disk's centre, as after a frame of motion.
-    const cv::Point2f start(0.7F * 160 - 4.0F, 0.5F * 120);
-    for (auto _ : state) {
-        benchmark::DoNotOptimize(estimator->estimate(preprocessor.edges(), start));
-    }
-    state.SetLabel(std::string(raypoint::core::to_string(settings.kind)));
-}
-
 }  // namespace
 
-BENCHMARK(BM_TrackerBgr)->Args({640, 480})->Args({320, 240})->Args({1280, 720})->Args({1920, 1080});
-BENCHMARK(BM_TrackerYuyv)->Args({640, 480})->Args({1280, 720});
-BENCHMARK(BM_Preprocess)->Args({640, 480});
-BENCHMARK(BM_Estimator)->DenseRange(0, 3);
+BENCHMARK(BM_Tracker)->Apply(tracker_arguments);
+
+}  // namespace raypoint::bench
 
 BENCHMARK_MAIN();

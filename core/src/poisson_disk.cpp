@@ -26,11 +26,10 @@ class SplitMix {
 // Mitchell's best-candidate sampling: each new tap is the candidate farthest from the taps
 // already placed, which approximates a Poisson-disk distribution without rejection loops.
 std::vector<cv::Point2f> make_taps() {
-    constexpr int tap_count = 16;
     constexpr int candidates = 32;
     SplitMix random;
     std::vector<cv::Point2f> taps{{0.0F, 0.0F}};
-    while (static_cast<int>(taps.size()) < tap_count) {
+    while (static_cast<int>(taps.size()) < poisson_disk_tap_count) {
         cv::Point2f best;
         double best_distance = -1.0;
         for (int c = 0; c < candidates; ++c) {

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <opencv2/imgproc.hpp>
-
 namespace raypoint::core {
 namespace {
 
@@ -17,29 +15,55 @@ int working_to_input(int index, int working_size, int input_size) noexcept {
     return static_cast<int>(std::lround(centre));
 }
 
+// |a - b| byte by byte; the unsigned form vectorizes.
+void absolute_difference(const std::uint8_t* __restrict a, const std::uint8_t* __restrict b,
+                         std::uint8_t* __restrict out, int length) noexcept {
+    for (int i = 0; i < length; ++i)
+        out[i] = static_cast<std::uint8_t>(std::max(a[i], b[i]) - std::min(a[i], b[i]));
+}
+
 }  // namespace
 
-int brightness_offset(const cv::Mat& difference, int minima) noexcept {
-    // Four interleaved histograms: a still scene puts nearly every pixel in one bin, and
-    // incrementing one counter back to back waits for each previous increment.
-    std::array<std::array<int, 256>, 4> partial{};
-    for (int y = 0; y < difference.rows; ++y) {
-        const std::uint8_t* row = difference.ptr<std::uint8_t>(y);
-        int x = 0;
-        for (; x + 4 <= difference.cols; x += 4) {
-            ++partial[0][row[x]];
-            ++partial[1][row[x + 1]];
-            ++partial[2][row[x + 2]];
-            ++partial[3][row[x + 3]];
-        }
-        for (; x < difference.cols; ++x)
-            ++partial[0][row[x]];
+namespace {
+
+using PartialHistograms = std::array<std::array<int, 256>, 4>;
+
+// Four interleaved histograms: a still scene puts nearly every pixel in one bin, and
+// incrementing one counter back to back waits for each previous increment.
+void count(PartialHistograms& bins, const std::uint8_t* values, int length) noexcept {
+    int x = 0;
+    for (; x + 4 <= length; x += 4) {
+        ++bins[0][values[x]];
+        ++bins[1][values[x + 1]];
+        ++bins[2][values[x + 2]];
+        ++bins[3][values[x + 3]];
     }
+    for (; x < length; ++x)
+        ++bins[0][values[x]];
+}
+
+// count() of values[0], values[3], ... values[3 * (length - 1)].
+void count_every_third(PartialHistograms& bins, const std::uint8_t* values, int length) noexcept {
+    int x = 0;
+    for (; x + 4 <= length; x += 4) {
+        ++bins[0][values[3 * x]];
+        ++bins[1][values[3 * x + 3]];
+        ++bins[2][values[3 * x + 6]];
+        ++bins[3][values[3 * x + 9]];
+    }
+    for (; x < length; ++x)
+        ++bins[0][values[3 * x]];
+}
+
+std::array<int, 256> total(const PartialHistograms& bins) noexcept {
     std::array<int, 256> histogram{};
     for (int value = 0; value < 256; ++value) {
-        histogram[value] =
-            partial[0][value] + partial[1][value] + partial[2][value] + partial[3][value];
+        histogram[value] = bins[0][value] + bins[1][value] + bins[2][value] + bins[3][value];
     }
+    return histogram;
+}
+
+int offset_of(const std::array<int, 256>& histogram, int minima) noexcept {
     int distinct = 0;
     int largest = 0;
     for (int value = 0; value < 256 && distinct < minima; ++value) {
@@ -50,7 +74,26 @@ int brightness_offset(const cv::Mat& difference, int minima) noexcept {
     return largest;
 }
 
-Preprocessor::Preprocessor(const PreprocessSettings& settings) : settings_(settings) {
+// The sum of max(0, value - offset) over the pixels the histogram counted; exact (an integer
+// sum, at most 19,200 x 255 at the working size).
+double compensated_sum(const std::array<int, 256>& histogram, int offset) noexcept {
+    std::int64_t sum = 0;
+    for (int value = offset + 1; value < 256; ++value)
+        sum += static_cast<std::int64_t>(histogram[value]) * (value - offset);
+    return static_cast<double>(sum);
+}
+
+}  // namespace
+
+int brightness_offset(const cv::Mat& difference, int minima) noexcept {
+    PartialHistograms bins{};
+    for (int y = 0; y < difference.rows; ++y)
+        count(bins, difference.ptr<std::uint8_t>(y), difference.cols);
+    return offset_of(total(bins), minima);
+}
+
+Preprocessor::Preprocessor(const PreprocessSettings& settings, InstructionSet instructions)
+    : settings_(settings), instructions_(instructions) {
     const cv::Size size(settings.work_width, settings.work_height);
     for (int i = 0; i < 2; ++i) {
         color_[i].create(size, CV_8UC3);
@@ -59,12 +102,11 @@ Preprocessor::Preprocessor(const PreprocessSettings& settings) : settings_(setti
         gray_[i].setTo(cv::Scalar::all(0));
     }
     squared_channels_.resize(static_cast<std::size_t>(settings.work_width) * 3);
-    strongest_.resize(static_cast<std::size_t>(settings.work_width));
+    planes_.create(settings.work_height * 3, settings.work_width, CV_8U);
     magnitude_.create(size, CV_8U);
     edges_.create(size, CV_8U);
     difference_.create(size, CV_8U);
-    color_difference_.create(size, CV_8UC3);
-    channel_difference_.create(size, CV_8U);
+    channel_row_.resize(static_cast<std::size_t>(settings.work_width) * 6);
     magnitude_.setTo(cv::Scalar::all(0));
     edges_.setTo(cv::Scalar::all(0));
     difference_.setTo(cv::Scalar::all(0));
@@ -115,16 +157,34 @@ void Preprocessor::prepare(const FrameView& frame) {
         }
     }
     if (interior_begin_ >= interior_end_) interior_begin_ = interior_end_ = 0;
+    // YUYV: with every interior centre of one parity p (even for 640, 1280, 1920 wide; odd
+    // for 320), column c + dx of centre c is in the pair starting at (c - p) + ((p + dx) & ~1)
+    // and its Y is the pair's second when p + dx is odd, the same for every centre.
+    const int parity = interior_begin_ < interior_end_ ? centre_columns_[interior_begin_] & 1 : 0;
     uniform_parity_ = true;
     for (int x = interior_begin_; x < interior_end_; ++x) {
-        if (centre_columns_[x] % 2 != 0) uniform_parity_ = false;
+        if ((centre_columns_[x] & 1) != parity) uniform_parity_ = false;
     }
     tap_odd_.assign(taps.size(), 0);
-    for (std::size_t t = 0; t < taps.size(); ++t)
-        tap_odd_[t] = (tap_dx_[t] & 1) != 0 ? 1 : 0;
+    tap_shift_bytes_.assign(taps.size(), 0);
+    centre_bytes_.resize(static_cast<std::size_t>(settings_.work_width));
+    const bool bgr = frame.format == PixelFormat::bgr;
+    for (std::size_t t = 0; t < taps.size(); ++t) {
+        tap_odd_[t] = ((parity + tap_dx_[t]) & 1) != 0 ? 1 : 0;
+        tap_shift_bytes_[t] = bgr ? tap_dx_[t] * 3 : ((parity + tap_dx_[t]) & ~1) * 2;
+    }
+    for (int x = 0; x < settings_.work_width; ++x)
+        centre_bytes_[x] = bgr ? centre_columns_[x] * 3 : (centre_columns_[x] & ~1) * 2;
 }
 
 bool Preprocessor::process(const FrameView& frame) noexcept {
+    if (!filter(frame)) return false;
+    compute_edges();
+    compute_difference();
+    return true;
+}
+
+bool Preprocessor::filter(const FrameView& frame) noexcept {
     const int bytes_per_pixel = frame.format == PixelFormat::bgr ? 3 : 2;
     if (frame.data == nullptr || frame.width < settings_.work_width ||
         frame.height < settings_.work_height || frame.stride < frame.width * bytes_per_pixel ||
@@ -149,32 +209,17 @@ bool Preprocessor::process(const FrameView& frame) noexcept {
             filter_yuyv(frame);
             break;
     }
-    cv::cvtColor(color_[current_], gray_[current_], cv::COLOR_BGR2GRAY);
-    compute_edges();
     ++processed_;
-    compute_difference();
     return true;
-}
-
-// Subtracts the brightness change (paper 4.1) in place and returns the sum left.
-double Preprocessor::compensate(cv::Mat& difference) noexcept {
-    offset_ = brightness_offset(difference, settings_.compensation_minima);
-    double sum = 0.0;
-    for (int y = 0; y < difference.rows; ++y) {
-        auto* row = difference.ptr<std::uint8_t>(y);
-        for (int x = 0; x < difference.cols; ++x) {
-            const int value = std::max(0, row[x] - offset_);
-            row[x] = static_cast<std::uint8_t>(value);
-            sum += value;
-        }
-    }
-    return sum;
 }
 
 // The difference image is the grey one (paper 4.1): its centre of mass picks the target, and
 // the target is what contrasts most. The movement value that starts a search may come from
 // the largest per-channel difference instead, which also sees a skin hand move over a wall of
 // its own brightness.
+// One pass over the rows: the grey difference image and its histogram, and the per-channel
+// difference's histogram; the offsets and the movement sums come from the histograms, so only
+// the grey image is compensated in place.
 void Preprocessor::compute_difference() noexcept {
     if (!has_previous()) {
         difference_.setTo(cv::Scalar::all(0));
@@ -182,24 +227,38 @@ void Preprocessor::compute_difference() noexcept {
         offset_ = 0;
         return;
     }
-    switch (settings_.movement_source) {
-        case EdgeSource::luma:
-            break;
-        case EdgeSource::max_channel:
-            cv::absdiff(color_[current_], color_[1 - current_], color_difference_);
-            for (int y = 0; y < channel_difference_.rows; ++y) {
-                const auto* in = color_difference_.ptr<std::uint8_t>(y);
-                auto* out = channel_difference_.ptr<std::uint8_t>(y);
-                for (int x = 0; x < channel_difference_.cols; ++x) {
-                    out[x] = std::max({in[3 * x], in[3 * x + 1], in[3 * x + 2]});
-                }
-            }
-            movement_ = compensate(channel_difference_);
-            break;
+    const bool channels = settings_.movement_source == EdgeSource::max_channel;
+    const int width = difference_.cols;
+    std::uint8_t* const channel_row = channel_row_.data();  // 3 * width, then 3 * width
+    std::uint8_t* const strongest = channel_row + 3 * width;
+    grey_bins_ = {};
+    channel_bins_ = {};
+    for (int y = 0; y < difference_.rows; ++y) {
+        absolute_difference(gray_[current_].ptr<std::uint8_t>(y),
+                            gray_[1 - current_].ptr<std::uint8_t>(y),
+                            difference_.ptr<std::uint8_t>(y), width);
+        count(grey_bins_, difference_.ptr<std::uint8_t>(y), width);
+        if (!channels) continue;
+        absolute_difference(color_[current_].ptr<std::uint8_t>(y),
+                            color_[1 - current_].ptr<std::uint8_t>(y), channel_row, 3 * width);
+        // The max of each byte and the next two, contiguous so it vectorizes; pixel x's is at 3x.
+        for (int i = 0; i + 2 < 3 * width; ++i)
+            strongest[i] = std::max({channel_row[i], channel_row[i + 1], channel_row[i + 2]});
+        count_every_third(channel_bins_, strongest, width);
     }
-    cv::absdiff(gray_[current_], gray_[1 - current_], difference_);
-    const double luma_movement = compensate(difference_);
-    if (settings_.movement_source == EdgeSource::luma) movement_ = luma_movement;
+    const std::array<int, 256> grey = total(grey_bins_);
+    offset_ = offset_of(grey, settings_.compensation_minima);
+    movement_ = compensated_sum(grey, offset_);
+    if (channels) {
+        const std::array<int, 256> channel = total(channel_bins_);
+        movement_ = compensated_sum(channel, offset_of(channel, settings_.compensation_minima));
+    }
+    const auto offset = static_cast<std::uint8_t>(offset_);
+    for (int y = 0; y < difference_.rows; ++y) {
+        std::uint8_t* row = difference_.ptr<std::uint8_t>(y);
+        for (int x = 0; x < width; ++x)
+            row[x] = static_cast<std::uint8_t>(row[x] > offset ? row[x] - offset : 0);
+    }
 }
 
 }  // namespace raypoint::core

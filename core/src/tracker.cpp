@@ -10,9 +10,9 @@
 namespace raypoint::core {
 
 struct Tracker::Impl {
-    explicit Impl(const Settings& s)
+    Impl(const Settings& s, InstructionSet instructions)
         : settings(s),
-          preprocessor(s.preprocess),
+          preprocessor(s.preprocess, instructions),
           estimator(make_estimator(s.estimator)),
           machine(s.tracking, cv::Size(s.preprocess.work_width, s.preprocess.work_height)),
           smoother(s.output),
@@ -29,7 +29,8 @@ struct Tracker::Impl {
     EstimatorTrace empty_trace;
 };
 
-Tracker::Tracker(const Settings& settings) : impl_(std::make_unique<Impl>(settings)) {}
+Tracker::Tracker(const Settings& settings, InstructionSet instructions)
+    : impl_(std::make_unique<Impl>(settings, instructions)) {}
 Tracker::~Tracker() = default;
 
 const Settings& Tracker::settings() const noexcept {

@@ -2,20 +2,24 @@
 // the documented definition: working pixel centre round((i + 0.5) * N / n - 0.5), taps at
 // round(tap * radius) with radius = filter_radius * width / 640, clamped to the frame, summed
 // and divided with rounding. The core's SIMD and clamped paths must match it exactly, in BGR
-// and in YUYV, at sizes that take each path.
+// and in YUYV, at sizes that take each path, with every instruction set this CPU runs; the grey
+// image computed alongside must equal OpenCV's cv::COLOR_BGR2GRAY of the colour image.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "raypoint/core/preprocess.hpp"
 
 namespace {
 
 using raypoint::core::FrameView;
+using raypoint::core::InstructionSet;
 using raypoint::core::PixelFormat;
 using raypoint::core::Preprocessor;
 using raypoint::core::PreprocessSettings;
@@ -73,20 +77,37 @@ cv::Mat reference(const cv::Mat& frame, PixelFormat format, int width, cv::Size 
     return out;
 }
 
+// The sets this CPU can run: scalar and SSE2 always on x86-64, AVX2 when it has it.
+std::vector<InstructionSet> runnable_sets() {
+    std::vector<InstructionSet> sets{InstructionSet::scalar};
+    const InstructionSet best = raypoint::core::best_instruction_set();
+    if (best != InstructionSet::scalar) sets.push_back(InstructionSet::sse2);
+    if (best == InstructionSet::avx2) sets.push_back(InstructionSet::avx2);
+    return sets;
+}
+
 void expect_matches_reference(cv::Size size, PixelFormat format) {
     const int bytes_per_row = format == PixelFormat::bgr ? size.width * 3 : size.width * 2;
     cv::Mat frame(size.height, bytes_per_row, CV_8U);
     cv::randu(frame, 0, 256);
     PreprocessSettings settings;
-    Preprocessor preprocessor(settings);
-    ASSERT_TRUE(preprocessor.process(
-        FrameView{frame.data, size.width, size.height, static_cast<int>(frame.step), format, 0}));
     const cv::Mat expected =
         reference(frame, format, size.width, cv::Size(settings.work_width, settings.work_height));
-    cv::Mat difference;
-    cv::absdiff(preprocessor.color(), expected, difference);
-    EXPECT_EQ(cv::countNonZero(difference.reshape(1)), 0)
-        << size << (format == PixelFormat::bgr ? " BGR" : " YUYV");
+    cv::Mat expected_grey;
+    cv::cvtColor(expected, expected_grey, cv::COLOR_BGR2GRAY);
+    for (const InstructionSet set : runnable_sets()) {
+        Preprocessor preprocessor(settings, set);
+        ASSERT_TRUE(preprocessor.process(FrameView{frame.data, size.width, size.height,
+                                                   static_cast<int>(frame.step), format, 0}));
+        const std::string where = std::to_string(size.width) + "x" + std::to_string(size.height) +
+                                  (format == PixelFormat::bgr ? " BGR " : " YUYV ") +
+                                  std::string(to_string(set));
+        cv::Mat difference;
+        cv::absdiff(preprocessor.color(), expected, difference);
+        EXPECT_EQ(cv::countNonZero(difference.reshape(1)), 0) << where;
+        cv::absdiff(preprocessor.gray(), expected_grey, difference);
+        EXPECT_EQ(cv::countNonZero(difference), 0) << where << " grey";
+    }
 }
 
 // 640, 1280, 1920: integer scales (SIMD interior); 642 and 320: the clamped path.
@@ -101,6 +122,49 @@ TEST(FilterReference, YuyvMatchesExactly) {
     for (const cv::Size size : {cv::Size(640, 480), cv::Size(1280, 720), cv::Size(642, 482),
                                 cv::Size(320, 240), cv::Size(1920, 1080)}) {
         expect_matches_reference(size, PixelFormat::yuyv);
+    }
+}
+
+// The edge and difference images too: two frames through each instruction set, for both edge
+// and movement sources, against the scalar path.
+TEST(FilterReference, EveryInstructionSetGivesTheSameImages) {
+    const cv::Size size(640, 480);
+    std::vector<cv::Mat> frames(2, cv::Mat(size, CV_8UC3));
+    for (auto& frame : frames) {
+        frame = cv::Mat(size, CV_8UC3);
+        cv::randu(frame, 0, 256);
+        cv::GaussianBlur(frame, frame, {0, 0}, 2.0);  // random noise alone has no edges to keep
+    }
+    for (const auto source :
+         {raypoint::core::EdgeSource::luma, raypoint::core::EdgeSource::max_channel}) {
+        PreprocessSettings settings;
+        settings.edge_source = source;
+        settings.movement_source = source;
+        settings.edge_threshold = 8;
+        std::vector<std::unique_ptr<Preprocessor>> runs;
+        for (const InstructionSet set : runnable_sets()) {
+            runs.push_back(std::make_unique<Preprocessor>(settings, set));
+            for (const auto& frame : frames) {
+                ASSERT_TRUE(runs.back()->process(FrameView{frame.data, size.width, size.height,
+                                                           static_cast<int>(frame.step),
+                                                           PixelFormat::bgr, 0}));
+            }
+        }
+        const Preprocessor& scalar = *runs.front();
+        ASSERT_GT(cv::countNonZero(scalar.edges()), 100);
+        ASSERT_GT(cv::countNonZero(scalar.difference()), 100);
+        for (std::size_t i = 1; i < runs.size(); ++i) {
+            const std::string where(to_string(runnable_sets()[i]));
+            for (const auto& [mine, theirs] :
+                 {std::pair{&runs[i]->magnitude(), &scalar.magnitude()},
+                  std::pair{&runs[i]->edges(), &scalar.edges()},
+                  std::pair{&runs[i]->difference(), &scalar.difference()}}) {
+                cv::Mat difference;
+                cv::absdiff(*mine, *theirs, difference);
+                EXPECT_EQ(cv::countNonZero(difference), 0) << where;
+            }
+            EXPECT_EQ(runs[i]->movement(), scalar.movement()) << where;
+        }
     }
 }
 

@@ -10,6 +10,7 @@
 
 #include "raypoint/core/estimator.hpp"
 #include "raypoint/core/frame.hpp"
+#include "raypoint/core/preprocess.hpp"
 #include "raypoint/core/settings.hpp"
 #include "raypoint/core/tracker_state.hpp"
 
@@ -44,7 +45,9 @@ struct TrackerImages {
 
 class Tracker {
   public:
-    explicit Tracker(const Settings& settings);
+    // `instructions`: for benchmarks and tests; every set gives the same results.
+    explicit Tracker(const Settings& settings,
+                     InstructionSet instructions = best_instruction_set());
     ~Tracker();
     Tracker(const Tracker&) = delete;
     Tracker& operator=(const Tracker&) = delete;

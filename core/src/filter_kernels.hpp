@@ -1,0 +1,91 @@
+#pragma once
+// Vector kernels of the Poisson-disk filter's interior (preprocess_filter.cpp), and the pixel
+// arithmetic every path shares, so the scalar, SSE2 and AVX2 paths give identical images.
+
+#include <cstdint>
+
+#include "raypoint/core/preprocess.hpp"
+
+namespace raypoint::core::detail {
+
+// The mean of the 16 taps with rounding: (sum + 8) / 16 as a shift.
+constexpr int tap_shift = 4;
+static_assert(1 << tap_shift == poisson_disk_tap_count);
+constexpr unsigned tap_mean(unsigned sum) noexcept {
+    return (sum + poisson_disk_tap_count / 2) >> tap_shift;
+}
+
+// BT.601 luma with OpenCV's cv::COLOR_BGR2GRAY fixed-point weights for 8-bit images (0.299,
+// 0.587, 0.114 in 15-bit fixed point, rounded): equal to cvtColor on all 2^24 colours.
+constexpr int grey_weight_b = 3735;
+constexpr int grey_weight_g = 19235;
+constexpr int grey_weight_r = 9798;
+constexpr int grey_shift = 15;
+constexpr std::uint8_t grey_of(unsigned b, unsigned g, unsigned r) noexcept {
+    return static_cast<std::uint8_t>(
+        (b * grey_weight_b + g * grey_weight_g + r * grey_weight_r + (1U << (grey_shift - 1))) >>
+        grey_shift);
+}
+
+// One row of the working images the filter writes: interleaved BGR, grey, and B, G, R apart
+// (the planes keep the Sobel loops contiguous).
+struct FilterOutput {
+    std::uint8_t* color;
+    std::uint8_t* grey;
+    std::uint8_t* blue;
+    std::uint8_t* green;
+    std::uint8_t* red;
+
+    void store(int x, unsigned b, unsigned g, unsigned r) const noexcept {
+        color[x * 3 + 0] = static_cast<std::uint8_t>(b);
+        color[x * 3 + 1] = static_cast<std::uint8_t>(g);
+        color[x * 3 + 2] = static_cast<std::uint8_t>(r);
+        blue[x] = static_cast<std::uint8_t>(b);
+        green[x] = static_cast<std::uint8_t>(g);
+        red[x] = static_cast<std::uint8_t>(r);
+        grey[x] = grey_of(b, g, r);
+    }
+};
+
+// One working row's interior, where no tap needs clamping.
+struct FilterRow {
+    // Per tap, its input row with the tap's column shift applied (BGR: dx * 3 bytes; YUYV with
+    // centres of parity p: ((p + dx) & ~1) * 2 bytes, the start of the tap's Y0 U Y1 V group).
+    const std::uint8_t* const* taps;
+    const int* centre_bytes;       // per working column, the byte offset of its centre (group)
+    const unsigned char* tap_odd;  // YUYV: 1 where the tap's Y is the second of its pair
+    int begin;                     // first working column to do
+    int end;                       // one past the last interior column
+    int width;                     // working width: stores may spill into columns still to come
+    FilterOutput out;
+};
+
+// Each returns the first working column it left undone (a multiple of its step from begin).
+int filter_bgr_sse2(const FilterRow& row) noexcept;
+int filter_yuyv_sse2(const FilterRow& row) noexcept;
+int filter_bgr_avx2(const FilterRow& row) noexcept;
+int filter_yuyv_avx2(const FilterRow& row) noexcept;
+
+// YUYV sums of 16 taps, Y from each tap's own pixel, U and V from its pair, to a BGR pixel and
+// its grey: averaged as YUV, then BT.601 limited range, the usual meaning of V4L2's YUYV.
+inline void store_yuv(const FilterOutput& out, int x, unsigned sum_y, unsigned sum_u,
+                      unsigned sum_v) noexcept {
+    const auto clamp_byte = [](int value) {
+        return static_cast<unsigned>(value < 0 ? 0 : (value > 255 ? 255 : value));
+    };
+    const int luma = static_cast<int>(tap_mean(sum_y)) - 16;
+    const int u = static_cast<int>(tap_mean(sum_u)) - 128;
+    const int v = static_cast<int>(tap_mean(sum_v)) - 128;
+    const int scaled = 298 * luma + 128;
+    const unsigned b = clamp_byte((scaled + 516 * u) >> 8);
+    const unsigned g = clamp_byte((scaled - 100 * u - 208 * v) >> 8);
+    const unsigned r = clamp_byte((scaled + 409 * v) >> 8);
+    out.store(x, b, g, r);
+}
+
+inline void store_bgr(const FilterOutput& out, int x, unsigned sum_b, unsigned sum_g,
+                      unsigned sum_r) noexcept {
+    out.store(x, tap_mean(sum_b), tap_mean(sum_g), tap_mean(sum_r));
+}
+
+}  // namespace raypoint::core::detail
