@@ -6,14 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "clip_loader.hpp"
 #include "errors.hpp"
-#include "file_frame_source.hpp"
 #include "log.hpp"
 #include "pointer_daemon.hpp"
 #include "pointer_events.hpp"
 #include "raypoint/config/config_paths.hpp"
-#include "realtime_source.hpp"
 #include "settings_options.hpp"
 #include "sink_factory.hpp"
 #include "v4l2_camera.hpp"
@@ -81,7 +78,7 @@ RunOptions parse_run_options(std::span<const std::string_view> args) {
 
 }  // namespace
 
-int run_command(std::span<const std::string_view> args) {
+int run_command(std::span<const std::string_view> args, RecordedSourceFactory recorded) {
     block_daemon_signals();
     // SIGHUP re-reads the same file and re-applies the same command line over it.
     const std::vector<std::string> kept(args.begin(), args.end());
@@ -100,13 +97,13 @@ int run_command(std::span<const std::string_view> args) {
     if (options.duration_s) {
         parts.duration = std::chrono::milliseconds(std::llround(*options.duration_s * 1000.0));
     }
-    if (options.realtime) {
-        // With --duration the clip loops to fill it; without, it plays once.
-        parts.source = std::make_unique<RealtimeSource>(
-            load_yuyv_clip(options.input), options.input, options.duration_s.has_value());
-        parts.stop_at_end_of_input = true;
-    } else if (!options.input.empty()) {
-        parts.source = std::make_unique<FileFrameSource>(options.input, options.paced);
+    if (!options.input.empty()) {
+        if (recorded == nullptr) {
+            throw UsageError("--input: this binary reads no video files; run it as raypoint-tools");
+        }
+        // With --duration a --realtime clip loops to fill it; without, it plays once.
+        parts.source = recorded(
+            {options.input, options.paced, options.realtime, options.duration_s.has_value()});
         parts.stop_at_end_of_input = true;
     } else {
         CameraOptions camera;
