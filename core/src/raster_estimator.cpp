@@ -1,14 +1,29 @@
 #include "raster_estimator.hpp"
 
 #include <algorithm>
+#include <array>
 
 #include "estimator_common.hpp"
 
 namespace raypoint::core::detail {
 
+namespace {
+
+// Left, right, up, down: the order the fills queue a pixel's neighbours in.
+struct Step {
+    int x;
+    int y;
+};
+constexpr std::array<Step, 4> neighbour_steps{{{-1, 0}, {1, 0}, {0, -1}, {0, 1}}};
+
+}  // namespace
+
 RasterEstimator::RasterEstimator(const EstimatorSettings& settings) : RayEstimatorBase(settings) {}
 
 void RasterEstimator::resize(const cv::Mat& edges) {
+    // The lists index the old size's pixels and blocks.
+    selected_.clear();
+    ray_list_.clear();
     width_ = edges.cols;
     height_ = edges.rows;
     const int m = settings_.block_size;
@@ -25,12 +40,15 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     trace_.blocks.assign(static_cast<std::size_t>(trace_.blocks_wide) * trace_.blocks_high, 0);
     selected_.reserve(trace_.blocks.size());
     ray_pixels_.assign(pixels, 0);
+    ray_list_.reserve(pixels);
     filled_.assign(pixels, 0);
     queue_.reserve(pixels);
 }
 
-void RasterEstimator::select(int x, int y) noexcept {
-    ray_pixels_[static_cast<std::size_t>(y) * width_ + x] = 1;
+// A pixel's block is selected on the pixel's first visit, so later visits change nothing.
+void RasterEstimator::select_new(unsigned char& visited, int x, int y) noexcept {
+    visited = 1;
+    ray_list_.push_back({x, y});
     const int block = block_of_row_[y] * trace_.blocks_wide + block_of_column_[x];
     if (trace_.blocks[block] == 0) {
         trace_.blocks[block] = 1;
@@ -82,7 +100,9 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
     for (const int block : selected_)
         trace_.blocks[block] = 0;
     selected_.clear();
-    std::fill(ray_pixels_.begin(), ray_pixels_.end(), 0);
+    for (const cv::Point pixel : ray_list_)
+        ray_pixels_[static_cast<std::size_t>(pixel.y) * width_ + pixel.x] = 0;
+    ray_list_.clear();
     const auto visit = [this](int x, int y) { select(x, y); };
     inner = RayCaster::off_edge(edges, inner, settings_.edge_escape);
 
@@ -122,28 +142,25 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
 bool RasterEstimator::fill(const cv::Mat& edges, bool within_blocks, double limit) noexcept {
     std::fill(filled_.begin(), filled_.end(), 0);
     queue_.clear();
-    for (std::size_t index = 0; index < ray_pixels_.size(); ++index) {
-        if (ray_pixels_[index] != 0) {
-            filled_[index] = inside;
-            queue_.push_back(static_cast<int>(index));
-        }
+    // The seeds come in order of first visit, not row by row: the filled set does not depend on
+    // the order, nor does the test against `limit` (the queue only grows, so it exceeds the limit
+    // at some point exactly when the whole filled set does), nor the exact sums of refine().
+    for (const cv::Point pixel : ray_list_) {
+        filled_[static_cast<std::size_t>(pixel.y) * width_ + pixel.x] = inside;
+        queue_.push_back(pixel);
     }
     for (std::size_t head = 0; head < queue_.size(); ++head) {
         if (static_cast<double>(queue_.size()) > limit) return false;
-        const int index = queue_[head];
-        const int x = index % width_;
-        const int y = index / width_;
-        const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
-        for (const auto& n : neighbours) {
-            if (n[0] < 0 || n[1] < 0 || n[0] >= width_ || n[1] >= height_) continue;
-            const int next = n[1] * width_ + n[0];
-            if (filled_[next] != 0 || edges.ptr<std::uint8_t>(n[1])[n[0]] != 0) continue;
-            if (within_blocks &&
-                trace_.blocks[block_of_row_[n[1]] * trace_.blocks_wide + block_of_column_[n[0]]] ==
-                    0) {
+        for (const Step step : neighbour_steps) {
+            const cv::Point next(queue_[head].x + step.x, queue_[head].y + step.y);
+            if (!contains(next)) continue;
+            const std::size_t index = static_cast<std::size_t>(next.y) * width_ + next.x;
+            if (filled_[index] != 0 || edges.ptr<std::uint8_t>(next.y)[next.x] != 0) continue;
+            if (within_blocks && trace_.blocks[block_of_row_[next.y] * trace_.blocks_wide +
+                                               block_of_column_[next.x]] == 0) {
                 continue;
             }
-            filled_[next] = inside;
+            filled_[index] = inside;
             queue_.push_back(next);
         }
     }
@@ -158,30 +175,29 @@ void RasterEstimator::add_edge_band(const cv::Mat& edges, double& area, double& 
     constexpr int band_depth = 3;
     const std::size_t inside_count = queue_.size();
     for (std::size_t head = 0; head < queue_.size(); ++head) {
-        const int index = queue_[head];
-        const int x = index % width_;
-        const int y = index / width_;
-        const int depth = filled_[index] == inside ? 0 : filled_[index] - band;
-        const int strength = filled_[index] == inside ? 0 : edges.ptr<std::uint8_t>(y)[x];
+        const cv::Point pixel = queue_[head];
+        const unsigned char here = filled_[static_cast<std::size_t>(pixel.y) * width_ + pixel.x];
+        const int depth = here == inside ? 0 : here - band;
+        const int strength = here == inside ? 0 : edges.ptr<std::uint8_t>(pixel.y)[pixel.x];
         bool ridge = true;
-        const int neighbours[4][2] = {{x - 1, y}, {x + 1, y}, {x, y - 1}, {x, y + 1}};
-        for (const auto& n : neighbours) {
-            if (n[0] < 0 || n[1] < 0 || n[0] >= width_ || n[1] >= height_) continue;
-            const int next = n[1] * width_ + n[0];
-            const int next_strength = edges.ptr<std::uint8_t>(n[1])[n[0]];
-            if (next_strength > strength && filled_[index] != inside) ridge = false;
-            if (filled_[next] != 0 || next_strength == 0 || next_strength < strength ||
+        for (const Step step : neighbour_steps) {
+            const cv::Point next(pixel.x + step.x, pixel.y + step.y);
+            if (!contains(next)) continue;
+            const std::size_t index = static_cast<std::size_t>(next.y) * width_ + next.x;
+            const int next_strength = edges.ptr<std::uint8_t>(next.y)[next.x];
+            if (next_strength > strength && here != inside) ridge = false;
+            if (filled_[index] != 0 || next_strength == 0 || next_strength < strength ||
                 depth >= band_depth) {
                 continue;
             }
-            filled_[next] = static_cast<unsigned char>(band + depth + 1);
+            filled_[index] = static_cast<unsigned char>(band + depth + 1);
             queue_.push_back(next);
         }
         if (head < inside_count) continue;
         const double weight = ridge ? 0.5 : 1.0;
         area += weight;
-        sum_x += weight * x;
-        sum_y += weight * y;
+        sum_x += weight * pixel.x;
+        sum_y += weight * pixel.y;
     }
 }
 
@@ -192,11 +208,9 @@ void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept 
     double area = 0.0;
     double sum_x = 0.0;
     double sum_y = 0.0;
-    for (const int index : queue_) {
-        const int x = index % width_;
-        const int y = index / width_;  // the row: integer division intended
-        sum_x += x;
-        sum_y += y;
+    for (const cv::Point pixel : queue_) {
+        sum_x += pixel.x;
+        sum_y += pixel.y;
     }
     area = static_cast<double>(queue_.size());
     add_edge_band(edges, area, sum_x, sum_y);

@@ -14,13 +14,23 @@ class RasterEstimator final : public RayEstimatorBase {
 
   private:
     void resize(const cv::Mat& edges);
-    void select(int x, int y) noexcept;
+    // Called for every pixel every ray runs through (thousands a frame, most of them again).
+    void select(int x, int y) noexcept {
+        unsigned char& visited = ray_pixels_[static_cast<std::size_t>(y) * width_ + x];
+        if (visited == 0) select_new(visited, x, y);
+    }
+    void select_new(unsigned char& visited, int x, int y) noexcept;
     cv::Point2f block_centroid() const noexcept;
     double block_area() const noexcept;
     // AreaMode::refined: area and centroid of the region the rays ran through, grown up to the
     // outline's ridge (docs/estimators.md).
     void refine(const cv::Mat& edges, Estimate& estimate) noexcept;
     bool fill(const cv::Mat& edges, bool within_blocks, double limit) noexcept;
+    bool contains(cv::Point pixel) const noexcept {
+        // One unsigned comparison an axis: negative coordinates wrap to large ones.
+        return static_cast<unsigned>(pixel.x) < static_cast<unsigned>(width_) &&
+               static_cast<unsigned>(pixel.y) < static_cast<unsigned>(height_);
+    }
     void add_edge_band(const cv::Mat& edges, double& area, double& sum_x, double& sum_y) noexcept;
 
     // filled_ values: 0 not reached, inside, or band + depth into the edge band.
@@ -32,9 +42,10 @@ class RasterEstimator final : public RayEstimatorBase {
     std::vector<int> block_of_column_;
     std::vector<int> block_of_row_;
     std::vector<unsigned char> ray_pixels_;  // 1 where a ray ran through, this frame
+    std::vector<cv::Point> ray_list_;        // the same pixels, each once, in order of first visit
     std::vector<int> selected_;              // indices of selected blocks, in selection order
     std::vector<unsigned char> filled_;      // refine(): 1 = reached
-    std::vector<int> queue_;
+    std::vector<cv::Point> queue_;           // refine(): reached pixels, in order of reaching
 };
 
 }  // namespace raypoint::core::detail
