@@ -20,6 +20,10 @@ using Clock = RunStatistics::Clock;
 // The camera comes back within 2 s of being plugged in again (the promise).
 constexpr auto reopen_interval = std::chrono::milliseconds(500);
 constexpr int frame_timeout_ms = 100;
+// A camera that stops delivering without an error (a driver that wedges, a v4l2loopback whose
+// writer quit) is lost too: buttons up, reported, reopened like an unplugged one. 2 s is ten
+// frames at the slowest low-light rate (5 fps) and a UVC camera's slow first frame.
+constexpr auto stall_timeout = std::chrono::seconds(2);
 
 std::string format_status(const char* format, double a, double b) {
     char buffer[128];
@@ -60,6 +64,7 @@ int PointerDaemon::run() {
               std::string(parts_.sink->name()));
     notifier_.ready();
     notifier_.status("initializing");
+    last_frame_at_ = Clock::now();
     for (;;) {
         if (!handle_signals()) break;
         handle_control();
@@ -72,6 +77,7 @@ int PointerDaemon::run() {
                 next_reopen_ = now + reopen_interval;
                 if (parts_.source->reopen()) {
                     camera_lost_ = false;
+                    last_frame_at_ = now;
                     log::info("camera back: " + parts_.source->description());
                 }
             }
@@ -82,10 +88,13 @@ int PointerDaemon::run() {
         switch (capture.status) {
             case CaptureStatus::frame:
                 on_frame(capture.frame);
-                // Only frames feed the watchdog: a stalled camera gets the service restarted.
+                last_frame_at_ = now;
+                // Only frames feed the watchdog (and the lost camera's retries): a loop stuck in
+                // a driver call gets the service restarted.
                 if (notifier_.watchdog_due(now)) notifier_.pet(now);
                 break;
             case CaptureStatus::timeout:
+                if (now - last_frame_at_ >= stall_timeout) on_lost("no frame for 2 s");
                 break;
             case CaptureStatus::lost:
                 on_lost(capture.reason);

@@ -27,15 +27,16 @@ SceneSpec base(std::string_view name, Target target, Background background, std:
 // The system tests' gestures (tests/system): the paper hand on the plain board appears at the
 // left, stands still for the tracker to settle, moves right (0.3 -> 0.7 of the width), stops,
 // moves down (0.35 -> 0.7 of the height) and stops. An explicit path, so the direction of
-// every stretch is known: 4.0-5.5 s right, 7.0-8.5 s down, still in between.
+// every stretch is known: 4.0-5.5 s right, 7.5-9.0 s down, still in between (long enough to
+// tell the two apart in a slow VM's events, which come up to a second late).
 SceneSpec right_then_down(std::string_view name, std::uint32_t seed) {
     SceneSpec s = base(name, Target::hand, Background::plain, seed);
-    s.seconds = 10;
+    s.seconds = 11;
     s.noise_sigma = 2;
     s.blur = 0.4;
     constexpr double depth = 0.65;  // m: the hand covers about 4% of the frame
     s.path = {{2.5, 0.3, 0.35, depth}, {4.0, 0.3, 0.35, depth}, {5.5, 0.7, 0.35, depth},
-              {7.0, 0.7, 0.35, depth}, {8.5, 0.7, 0.7, depth},  {10, 0.7, 0.7, depth}};
+              {7.5, 0.7, 0.35, depth}, {9.0, 0.7, 0.7, depth},  {11, 0.7, 0.7, depth}};
     return s;
 }
 

@@ -25,9 +25,11 @@ load_modules() {
   modprobe -a evdev uinput || bad "modprobe evdev uinput"
   load_loopback
 }
-# One capture node, /dev/video0, that becomes a capture device at a writer's first frame.
+# Three nodes, /dev/video0-2, each a capture device from its writer's first frame. One node a
+# writer: once a writer has closed a node, the next one cannot set its format there (EINVAL).
 load_loopback() {
-  modprobe v4l2loopback devices=1 video_nr=0 exclusive_caps=1 card_label="raypoint loopback" ||
+  modprobe v4l2loopback devices=3 video_nr=0,1,2 exclusive_caps=1,1,1 \
+    card_label="raypoint loopback 0,raypoint loopback 1,raypoint loopback 2" ||
     bad "modprobe v4l2loopback"
 }
 
@@ -41,7 +43,7 @@ wait_for() {
   return 1
 }
 
-# start_writer CLIP LOG [play options]: plays the clip into the loopback node (with --wait:
+# start_writer CLIP LOG [play options]: plays the clip into $camera (with --wait:
 # its first frame until go) and returns after the first frame. Sets writer_pid, and origin
 # (clip time 0, CLOCK_MONOTONIC seconds) unless it waits.
 start_writer() {
@@ -78,17 +80,17 @@ start_listener() {
   wait_for "$notify_log" '^listening' 10 || bad "notify listener did not start"
 }
 
-# write_config FILE MODE: a real configuration file; the defaults but for these keys. Mirror
-# off: the clip's right is the cursor's right.
+# write_config FILE MODE [DEVICE]: a real configuration file; the defaults but for these keys
+# (DEVICE: $camera). Mirror off: the clip's right is the cursor's right.
 write_config() {
   cat >"$1" <<INI
-# raypoint in the VM: the loopback camera, $2 motion.
+# raypoint in the VM: a loopback camera, $2 motion.
 [pointer]
 mode = $2
 mirror = false
 
 [camera]
-device = $camera
+device = ${3:-$camera}
 INI
 }
 
@@ -105,7 +107,14 @@ start_daemon() {
 # wait_ready: until the daemon sent READY=1 (a cold start in the VM takes up to half a minute:
 # 250 shared libraries through 9p under TCG).
 wait_ready() {
-  wait_for "$notify_log" ' READY=1$' 120 || bad "no READY=1 from the daemon ($(tail -3 "$daemon_log"))"
+  local deadline=$((SECONDS + 120))
+  while [ "$SECONDS" -le "$deadline" ] && kill -0 "$daemon_pid" 2>/dev/null; do
+    grep -q ' READY=1$' "$notify_log" && return 0
+    sleep 0.1
+  done
+  grep -q ' READY=1$' "$notify_log" && return 0
+  bad "no READY=1 from the daemon ($(tail -3 "$daemon_log"))"
+  return 1
 }
 
 # stop PID...: SIGTERM and wait (a process that has exited already is fine).
@@ -139,3 +148,24 @@ count() { grep -cE "$2" "$1"; }
 ge() { [ "${1:-0}" -ge "${2:-0}" ]; }
 le() { [ "${1:-0}" -le "${2:-0}" ]; }
 abs() { local v=${1:-0}; echo "${v#-}"; }
+eq() { [ "${1:-x}" = "${2:-y}" ]; }
+
+# run_clip CLIP CONFIG NAME: the whole clip through a fresh daemon, its events in
+# events-NAME.txt; the daemon is stopped after the clip.
+run_clip() {
+  start_writer "$1" "writer-$3.log" --wait
+  start_recorder "events-$3.txt"
+  start_daemon "$2" "$3"
+  wait_ready
+  go
+  wait "$writer_pid"
+  sleep 0.5
+  stop "$daemon_pid" "$recorder_pid" "$listener_pid"
+}
+
+# button_times TRANSCRIPT VALUE: clip times of BTN_LEFT VALUE (1 press, 0 release), one a line.
+button_times() {
+  awk -v o="$origin" -v v="$2" '$3 == "BTN_LEFT" && $4 == v { printf "%.2f\n", $1 - o }' "$1"
+}
+# between A B LOW HIGH: LOW <= A... for clip times (decimals): A within [LOW, HIGH].
+within() { awk -v a="${1:-none}" -v l="$2" -v h="$3" 'BEGIN { exit !(a != "none" && a >= l && a <= h) }'; }

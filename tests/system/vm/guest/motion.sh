@@ -1,9 +1,10 @@
 # Motion (docs/testing.md): the rightdown clip (the hand moves right 4.0-5.5 s, stands, moves
-# down 7.0-8.5 s, stands) through raypoint run, in both pointer modes: the cursor's events move
-# right, then down. The stretches are read from 3.9 s to 6.9 s and from 6.9 s to the end.
+# down 7.5-9.0 s, stands) through raypoint run, in both pointer modes: the cursor's events move
+# right, then down. The stretches are read from 3.9 s to 7.4 s and from 7.4 s to the end.
 scenario() {
   load_modules
   for mode in relative absolute; do
+    [ "$mode" = relative ] && camera=/dev/video0 || camera=/dev/video1
     write_config "$work/$mode.ini" "$mode"
     start_writer rightdown "writer-$mode.log" --wait
     start_recorder "events-$mode.txt"
@@ -21,10 +22,10 @@ scenario() {
 # gain 2400 px a frame width with acceleration), the other axis within 10% of it.
 motion_relative() {
   local right_x right_y down_x down_y
-  right_x=$(sum "$1" REL_X 3.9 6.9)
-  right_y=$(sum "$1" REL_Y 3.9 6.9)
-  down_x=$(sum "$1" REL_X 6.9 11)
-  down_y=$(sum "$1" REL_Y 6.9 11)
+  right_x=$(sum "$1" REL_X 3.9 7.4)
+  right_y=$(sum "$1" REL_Y 3.9 7.4)
+  down_x=$(sum "$1" REL_X 7.4 12)
+  down_y=$(sum "$1" REL_Y 7.4 12)
   echo "relative: right stretch REL_X $right_x REL_Y $right_y; down stretch REL_X $down_x REL_Y $down_y"
   check "relative: moves right (REL_X $right_x >= 600)" ge "$right_x" 600
   check "relative: not down or up while moving right (|REL_Y| $(abs "$right_y") <= REL_X / 10)" \
@@ -41,13 +42,13 @@ motion_absolute() {
   local x0 y0 x1 y1 x2 y2
   x0=$(value_at "$1" ABS_X 3.9)
   y0=$(value_at "$1" ABS_Y 3.9)
-  x1=$(value_at "$1" ABS_X 6.9)
-  y1=$(value_at "$1" ABS_Y 6.9)
-  x2=$(value_at "$1" ABS_X 11)
-  y2=$(value_at "$1" ABS_Y 11)
-  echo "absolute: ($x0, $y0) at 3.9 s, ($x1, $y1) at 6.9 s, ($x2, $y2) at the end"
+  x1=$(value_at "$1" ABS_X 7.4)
+  y1=$(value_at "$1" ABS_Y 7.4)
+  x2=$(value_at "$1" ABS_X 12)
+  y2=$(value_at "$1" ABS_Y 12)
+  echo "absolute: ($x0, $y0) at 3.9 s, ($x1, $y1) at 7.4 s, ($x2, $y2) at the end"
   if [ -z "$x0" ] || [ -z "$y0" ] || [ -z "$x1" ] || [ -z "$y1" ] || [ -z "$x2" ] || [ -z "$y2" ]; then
-    bad "absolute: no position at one of 3.9 s, 6.9 s, the end"
+    bad "absolute: no position at one of 3.9 s, 7.4 s, the end"
     return
   fi
   local right=$((x1 - x0)) down=$((y2 - y1))
