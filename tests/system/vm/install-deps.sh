@@ -26,7 +26,11 @@ fi
 export DEBIAN_FRONTEND=noninteractive
 $as_root apt-get update -qq
 $as_root apt-get install -y -qq --no-install-recommends $packages
-# The packages' triggers run DKMS for the kernel installed with them; a kernel added earlier
-# without its module gets it here.
-have_loopback || $as_root dkms autoinstall
+# The packages' triggers run DKMS for the kernel installed with them; a kernel that has headers
+# but no module yet gets it here.
+if ! have_loopback; then
+  for headers in /lib/modules/*/build; do
+    [ -d "$headers" ] && $as_root dkms autoinstall -k "$(basename "$(dirname "$headers")")"
+  done
+fi
 have_loopback || { echo "install-deps: DKMS built no v4l2loopback for an installed kernel" >&2; exit 1; }

@@ -4,6 +4,8 @@
 # A missing prerequisite: skipped (77) on a developer's machine, a failure under CI=true,
 # where install-deps should have provided everything.
 unavailable() {
+  # prepare.sh keeps the reason for the scenarios, which then give the same one.
+  [ -n "${unavailable_file:-}" ] && echo "$*" >"$unavailable_file"
   if [ "${CI:-}" = "true" ]; then
     echo "FAIL: $* (CI=true: a missing prerequisite is a failure; .ci/install-deps installs it)"
     exit 1

@@ -10,7 +10,8 @@ writer=$3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/lib.sh"
 mkdir -p "$vm_dir/clips"
-rm -f "$vm_dir/kernel.env"
+rm -f "$vm_dir/kernel.env" "$vm_dir/unavailable"
+unavailable_file="$vm_dir/unavailable"
 
 command -v qemu-system-x86_64 >/dev/null || unavailable "no qemu-system-x86_64"
 command -v cpio >/dev/null || unavailable "no cpio"

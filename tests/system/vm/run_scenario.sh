@@ -14,7 +14,8 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/lib.sh"
 boot_timeout=${RAYPOINT_VM_TIMEOUT:-240}  # s for the whole boot; a scenario takes 20-60 s
 
-[ -f "$vm_dir/kernel.env" ] || unavailable "vm_prepare did not prepare $vm_dir (its output says why)"
+[ -f "$vm_dir/kernel.env" ] ||
+  unavailable "$(cat "$vm_dir/unavailable" 2>/dev/null || echo "vm_prepare has not prepared $vm_dir")"
 . "$vm_dir/kernel.env"
 command -v qemu-system-x86_64 >/dev/null || unavailable "no qemu-system-x86_64"
 
