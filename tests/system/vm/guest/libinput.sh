@@ -2,6 +2,10 @@
 # a desktop), `libinput list-devices` lists the virtual pointer with the pointer capability, in
 # both modes.
 scenario() {
+  if ! command -v libinput >/dev/null || [ ! -x /lib/systemd/systemd-udevd ]; then
+    verdict="skip no libinput or systemd-udevd on the host (libinput-tools, udev)"
+    return
+  fi
   load_modules
   # udevd handles the uevents of devices made from now on. (udevadm trigger, settle and control
   # do nothing in a chroot, so the database entry is what the script waits for.)
