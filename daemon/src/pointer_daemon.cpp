@@ -27,6 +27,10 @@ constexpr int frame_timeout_ms = 100;
 // Without frames the loop still wakes once a second, so that STATUS= and `ctl status` show the
 // frame rate falling to 0 when a camera stalls.
 constexpr auto idle_wake = std::chrono::seconds(1);
+// A camera that stops delivering without an error (a driver that wedges, a v4l2loopback whose
+// writer quit) is lost too: buttons up, reported, reopened like an unplugged one. 2 s is ten
+// frames at the slowest low-light rate (5 fps) and a UVC camera's slow first frame.
+constexpr auto stall_timeout = std::chrono::seconds(2);
 
 std::string format_status(const char* format, double a, double b) {
     char buffer[128];
@@ -70,6 +74,7 @@ int PointerDaemon::run() {
     const auto started = Clock::now();
     statistics_.start(started);
     if (parts_.duration) stop_at_ = started + *parts_.duration;
+    last_frame_at_ = started;
     unsigned ready = signal_ready | control_ready;  // both looked at before the first wait
     for (;;) {
         if ((ready & signal_ready) != 0 && !handle_signals()) break;
@@ -87,6 +92,7 @@ int PointerDaemon::run() {
                 next_reopen_ = now + reopen_interval;
                 if (parts_.source->reopen()) {
                     camera_lost_ = false;
+                    last_frame_at_ = Clock::now();
                     log::info("camera back: " + parts_.source->description());
                 }
             }
@@ -107,10 +113,13 @@ int PointerDaemon::run() {
         switch (capture.status) {
             case CaptureStatus::frame:
                 on_frame(capture);
-                // Only frames feed the watchdog: a stalled camera gets the service restarted.
+                last_frame_at_ = Clock::now();
+                // Only frames feed the watchdog (and the lost camera's retries): a loop stuck in
+                // a driver call gets the service restarted.
                 if (notifier_.watchdog_due(now)) notifier_.pet(now);
                 break;
             case CaptureStatus::timeout:
+                if (Clock::now() - last_frame_at_ >= stall_timeout) on_lost("no frame for 2 s");
                 break;
             case CaptureStatus::lost:
                 on_lost(capture.reason);

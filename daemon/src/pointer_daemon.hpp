@@ -79,6 +79,7 @@ class PointerDaemon {
     std::string lost_reason_;
     RunStatistics::Clock::time_point next_reopen_{};
     RunStatistics::Clock::time_point stop_at_ = RunStatistics::Clock::time_point::max();
+    RunStatistics::Clock::time_point last_frame_at_{};  // the stall timeout's start
     core::Timestamp last_timestamp_ = 0;
     core::FrameResult last_result_{};
     cv::Point2d recenter_offset_{0.0, 0.0};

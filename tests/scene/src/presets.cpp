@@ -2,11 +2,15 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "raypoint/scene/presets.hpp"
 
 namespace raypoint::scene {
 namespace {
+
+constexpr std::uint32_t rightdown_seed = 12;  // its place in `names` below, plus one
 
 // A 15 cm ball on a thread, an adult hand (wrist to fingertip) or a paper one of that size.
 constexpr double sphere_size_m = 0.15;
@@ -20,6 +24,53 @@ SceneSpec base(std::string_view name, Target target, Background background, std:
     s.background = background;
     s.target_size_m = target == Target::sphere ? sphere_size_m : hand_size_m;
     return s;
+}
+
+// The system tests' gestures (tests/system): the paper hand on the plain board, on an explicit
+// path (keyframes: t, x, y, depth).
+SceneSpec gesture(std::string_view name, std::uint32_t seed, double seconds,
+                  std::vector<Keyframe> path) {
+    SceneSpec s = base(name, Target::hand, Background::plain, seed);
+    s.seconds = seconds;
+    s.noise_sigma = 2;
+    s.blur = 0.4;
+    s.path = std::move(path);
+    return s;
+}
+
+// The hand appears at the left, stands still for the tracker to settle, moves right (0.3 -> 0.7 of
+// the width), stops, moves down (0.35 -> 0.7 of the height) and stops. An explicit path, so the
+// direction of every stretch is known: 4.0-5.5 s right, 7.5-9.0 s down, still in between (long
+// enough to tell the two apart in a slow VM's events, which come up to a second late).
+SceneSpec right_then_down(std::string_view name, std::uint32_t seed) {
+    constexpr double depth = 0.65;  // m: the hand covers about 4% of the frame
+    return gesture(name, seed, 11,
+                   {{2.5, 0.3, 0.35, depth},
+                    {4.0, 0.3, 0.35, depth},
+                    {5.5, 0.7, 0.35, depth},
+                    {7.5, 0.7, 0.35, depth},
+                    {9.0, 0.7, 0.7, depth},
+                    {11, 0.7, 0.7, depth}});
+}
+
+// A held push: the hand stands still, comes 23% closer in 0.2 s (4.0 s), stays there while it
+// moves right (5.3-6.5 s, after the click's drag_seconds) and pulls back (6.8-7.0 s). Keys in
+// pairs around each change keep the spline from starting it early.
+SceneSpec drag(std::string_view name, std::uint32_t seed) {
+    constexpr double far = 0.65;  // m
+    constexpr double near = 0.5;  // m: sqrt(area) 30% up, a clear press
+    return gesture(name, seed, 9,
+                   {{2.5, 0.3, 0.5, far},
+                    {3.8, 0.3, 0.5, far},
+                    {4.0, 0.3, 0.5, far},
+                    {4.2, 0.3, 0.5, near},
+                    {4.4, 0.3, 0.5, near},
+                    {5.3, 0.3, 0.5, near},
+                    {6.5, 0.6, 0.5, near},
+                    {6.8, 0.6, 0.5, near},
+                    {7.0, 0.6, 0.5, far},
+                    {7.2, 0.6, 0.5, far},
+                    {9, 0.6, 0.5, far}});
 }
 
 SceneSpec make(std::string_view name, std::uint32_t seed) {
@@ -99,12 +150,20 @@ SceneSpec make(std::string_view name, std::uint32_t seed) {
         s.pushes = {5.0, 6.6};
         return s;
     }
+    if (name == "rightdown") return right_then_down(name, seed);
+    if (name == "click") {
+        // rightdown's motion and board (its seed) with one push in the stop between the moves.
+        SceneSpec s = right_then_down(name, rightdown_seed);
+        s.pushes = {6.0};
+        return s;
+    }
+    if (name == "drag") return drag(name, seed);
     return {};
 }
 
-constexpr std::array<std::string_view, 11> names{
-    "ideal",    "lowlight", "interfering", "nonconvex", "realworld", "hd60",
-    "exposure", "jpeg",     "fast",        "pause",     "push"};
+constexpr std::array<std::string_view, 14> names{
+    "ideal", "lowlight", "interfering", "nonconvex", "realworld", "hd60",  "exposure",
+    "jpeg",  "fast",     "pause",       "push",      "rightdown", "click", "drag"};
 
 }  // namespace
 
