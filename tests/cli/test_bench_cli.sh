@@ -75,15 +75,7 @@ timeout 300 "$raypoint" bench --scenes nonconvex,ideal --frames 110 --peers none
 grep '"clip":"nonconvex"' "$work/rendered.jsonl" | grep -q '"tracked":null' && fail "rendered scene without accuracy"
 
 # Bad input: exit code, one line on stderr, and what it must name.
-expect_error() {  # expected_exit what_to_find args...
-  local code=$1 find=$2
-  shift 2
-  timeout 60 "$raypoint" "$@" > "$work/stdout.txt" 2> "$work/stderr.txt"
-  local got=$?
-  [ "$got" -eq "$code" ] || fail "'$*' exited $got, expected $code"
-  [ "$(wc -l < "$work/stderr.txt")" -eq 1 ] || fail "'$*' printed $(wc -l < "$work/stderr.txt") lines on stderr: $(cat "$work/stderr.txt")"
-  grep -qF -- "$find" "$work/stderr.txt" || fail "'$*' error lacks '$find': $(cat "$work/stderr.txt")"
-}
+. "$(dirname "$0")/expect_error.sh"
 mkdir "$work/text" "$work/empty" "$work/nomasks" "$work/badmasks" "$work/badtruth"
 echo "not a video at all" > "$work/text/video.mp4"
 for dir in nomasks badmasks badtruth; do cp "$work/ideal/video.mp4" "$work/ideal/truth.jsonl" "$work/$dir/"; done

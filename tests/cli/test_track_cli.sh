@@ -47,15 +47,8 @@ for name in ray iterative-ray iterative-ny-ray raster; do
 done
 
 # Bad input: exit code, one line on stderr, and what it must name.
-expect_error() {  # expected_exit what_to_find args...
-  local code=$1 find=$2
-  shift 2
-  timeout 30 "$raypoint" "$@" > "$work/stdout.txt" 2> "$work/stderr.txt"
-  local got=$?
-  [ "$got" -eq "$code" ] || fail "'$*' exited $got, expected $code"
-  [ "$(wc -l < "$work/stderr.txt")" -eq 1 ] || fail "'$*' printed $(wc -l < "$work/stderr.txt") lines on stderr: $(cat "$work/stderr.txt")"
-  grep -qF -- "$find" "$work/stderr.txt" || fail "'$*' error lacks '$find': $(cat "$work/stderr.txt")"
-}
+. "$(dirname "$0")/expect_error.sh"
+expect_timeout=30
 : > "$work/empty.mp4"
 echo "not a video at all" > "$work/text.mp4"
 head -c 40000 "$clip" > "$work/truncated.mp4"
