@@ -7,10 +7,7 @@
 set -u
 raypoint=$1
 render=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/common.sh"
 
 # 5 s: the target enters at 2.5 s and is scored from 3.5 s on (score.py's grace), 45 frames.
 "$render" --preset ideal --seconds 5 --out "$work/ideal" >/dev/null || { echo "cannot render"; exit 1; }
@@ -75,7 +72,6 @@ timeout 300 "$raypoint" bench --scenes nonconvex,ideal --frames 110 --peers none
 grep '"clip":"nonconvex"' "$work/rendered.jsonl" | grep -q '"tracked":null' && fail "rendered scene without accuracy"
 
 # Bad input: exit code, one line on stderr, and what it must name.
-. "$(dirname "$0")/expect_error.sh"
 mkdir "$work/text" "$work/empty" "$work/nomasks" "$work/badmasks" "$work/badtruth"
 echo "not a video at all" > "$work/text/video.mp4"
 for dir in nomasks badmasks badtruth; do cp "$work/ideal/video.mp4" "$work/ideal/truth.jsonl" "$work/$dir/"; done

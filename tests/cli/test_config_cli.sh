@@ -4,10 +4,7 @@
 # usage: test_config_cli.sh RAYPOINT
 set -u
 raypoint=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/common.sh"
 # Runs the command; leaves its exit code in $rc, stdout in $work/out, stderr in $work/err.
 run() { timeout 30 "$@" > "$work/out" 2> "$work/err"; rc=$?; }
 # The search path only ever sees this test's directories.

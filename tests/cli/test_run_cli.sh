@@ -6,11 +6,9 @@
 set -u
 raypoint=$1
 render=$2
-work=$(mktemp -d)
+. "$(dirname "$0")/common.sh"
 daemon_pid=""
 trap '[ -n "$daemon_pid" ] && kill -9 "$daemon_pid" 2>/dev/null; rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 export XDG_RUNTIME_DIR="$work/runtime" XDG_CONFIG_HOME="$work/config" XDG_CONFIG_DIRS="$work/none"
 mkdir -p "$XDG_RUNTIME_DIR"
 

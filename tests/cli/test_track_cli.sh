@@ -6,10 +6,7 @@
 set -u
 raypoint=$1
 render=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+. "$(dirname "$0")/common.sh"
 
 "$render" --preset ideal --seconds 4 --out "$work/ideal" --no-masks >/dev/null || { echo "cannot render"; exit 1; }
 clip="$work/ideal/video.mp4"
@@ -47,7 +44,6 @@ for name in ray iterative-ray iterative-ny-ray raster; do
 done
 
 # Bad input: exit code, one line on stderr, and what it must name.
-. "$(dirname "$0")/expect_error.sh"
 expect_timeout=30
 : > "$work/empty.mp4"
 echo "not a video at all" > "$work/text.mp4"
