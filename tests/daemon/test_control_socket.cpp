@@ -14,7 +14,7 @@
 #include <future>
 #include <string>
 
-#include "control_socket.hpp"
+#include "raypoint/control/control_socket.hpp"
 
 namespace {
 

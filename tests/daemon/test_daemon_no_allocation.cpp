@@ -14,12 +14,12 @@
 #include <unistd.h>
 
 #include "allocation_counter.hpp"
-#include "control_socket.hpp"
-#include "event_sink.hpp"
-#include "pointer_daemon.hpp"
+#include "raypoint/control/control_socket.hpp"
+#include "raypoint/loop/pointer_daemon.hpp"
+#include "raypoint/loop/realtime_source.hpp"
+#include "raypoint/output/event_sink.hpp"
 #include "raypoint/scene/presets.hpp"
 #include "raypoint/scene/renderer.hpp"
-#include "realtime_source.hpp"
 
 namespace raypoint::daemon {
 namespace {

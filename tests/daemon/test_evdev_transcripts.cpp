@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "file_sink.hpp"
-#include "pointer_events.hpp"
 #include "raypoint/core/pointer_controller.hpp"
+#include "raypoint/output/file_sink.hpp"
+#include "raypoint/output/pointer_events.hpp"
 
 namespace raypoint::daemon {
 namespace {

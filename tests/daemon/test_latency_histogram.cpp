@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "latency_histogram.hpp"
+#include "raypoint/loop/latency_histogram.hpp"
 
 namespace raypoint::daemon {
 namespace {

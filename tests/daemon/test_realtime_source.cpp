@@ -11,8 +11,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "realtime_source.hpp"
-#include "yuyv_clip.hpp"
+#include "raypoint/loop/realtime_source.hpp"
+#include "raypoint/loop/yuyv_clip.hpp"
 
 namespace raypoint::daemon {
 namespace {

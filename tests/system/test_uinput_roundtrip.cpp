@@ -18,8 +18,8 @@
 #include <thread>
 #include <vector>
 
-#include "pointer_events.hpp"
-#include "uinput_pointer.hpp"
+#include "raypoint/output/pointer_events.hpp"
+#include "raypoint/output/uinput_pointer.hpp"
 
 namespace {
 

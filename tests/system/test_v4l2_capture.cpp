@@ -8,9 +8,9 @@
 #include <exception>
 #include <string>
 
-#include "camera_errors.hpp"
-#include "v4l2_camera.hpp"
-#include "v4l2_device.hpp"
+#include "raypoint/capture/camera_errors.hpp"
+#include "raypoint/capture/v4l2_camera.hpp"
+#include "raypoint/capture/v4l2_device.hpp"
 
 namespace {
 

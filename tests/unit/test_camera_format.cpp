@@ -16,8 +16,8 @@
 
 #include <gtest/gtest.h>
 
-#include "camera_errors.hpp"
-#include "camera_format.hpp"
+#include "raypoint/capture/camera_errors.hpp"
+#include "raypoint/capture/camera_format.hpp"
 
 namespace raypoint::daemon {
 

@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "errors.hpp"
 #include "ini_testing.hpp"
-#include "settings_options.hpp"
+#include "raypoint/cli/settings_options.hpp"
+#include "raypoint/cli/usage_error.hpp"
 
 namespace raypoint::daemon {
 namespace {

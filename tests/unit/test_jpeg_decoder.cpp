@@ -9,7 +9,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "jpeg_decoder.hpp"
+#include "raypoint/capture/jpeg_decoder.hpp"
 
 namespace raypoint::daemon {
 namespace {

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "log.hpp"
+#include "raypoint/service/log.hpp"
 
 namespace {
 

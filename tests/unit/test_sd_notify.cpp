@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "sd_notify.hpp"
+#include "raypoint/service/sd_notify.hpp"
 
 namespace {
 

@@ -15,12 +15,12 @@
 
 #include <gtest/gtest.h>
 
-#include "errors.hpp"
-#include "event_sink.hpp"
-#include "file_sink.hpp"
-#include "pointer_events.hpp"
-#include "sink_factory.hpp"
-#include "uinput_pointer.hpp"
+#include "raypoint/cli/sink_option.hpp"
+#include "raypoint/cli/usage_error.hpp"
+#include "raypoint/output/event_sink.hpp"
+#include "raypoint/output/file_sink.hpp"
+#include "raypoint/output/pointer_events.hpp"
+#include "raypoint/output/uinput_pointer.hpp"
 
 namespace raypoint::daemon {
 namespace {

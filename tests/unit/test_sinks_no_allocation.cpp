@@ -13,9 +13,9 @@
 #include <unistd.h>
 #include "allocation_counter.hpp"
 
-#include "event_sink.hpp"
-#include "file_sink.hpp"
-#include "pointer_events.hpp"
+#include "raypoint/output/event_sink.hpp"
+#include "raypoint/output/file_sink.hpp"
+#include "raypoint/output/pointer_events.hpp"
 
 namespace raypoint::daemon {
 namespace {

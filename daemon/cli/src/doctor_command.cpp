@@ -1,0 +1,133 @@
+#include "doctor_command.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "raypoint/capture/v4l2_device.hpp"
+#include "raypoint/cli/usage_error.hpp"
+#include "raypoint/config/config_paths.hpp"
+#include "raypoint/config/ini_file.hpp"
+#include "raypoint/control/control_socket.hpp"
+
+namespace raypoint::daemon {
+namespace {
+
+struct Check {
+    bool ok = true;
+    std::string what;  // one line: what was found
+    std::string fix;   // when not ok: what to do about it
+};
+
+void print(const std::string& area, const Check& check, int& failures) {
+    std::printf("%-4s %-8s %s\n", check.ok ? "ok" : "FAIL", area.c_str(), check.what.c_str());
+    if (!check.ok) {
+        std::printf("     fix: %s\n", check.fix.c_str());
+        ++failures;
+    }
+}
+
+// The device node can be opened for reading and writing by this user.
+std::string access_problem(const std::string& path) {
+    if (access(path.c_str(), R_OK | W_OK) == 0) return {};
+    return std::strerror(errno);
+}
+
+Check check_config(config::Config& loaded) {
+    const auto path = config::find_config_file();
+    if (!path) return {true, "no configuration file: the defaults (raypoint print-config)", ""};
+    try {
+        loaded = config::load_config(*path);
+        return {true, path->string() + " is valid", ""};
+    } catch (const config::InvalidConfig& e) {
+        std::string what = path->string() + " has " + std::to_string(e.errors().size()) +
+                           " error(s), the first: " + e.errors().front();
+        return {false, what, "raypoint check-config lists them all; edit the file"};
+    } catch (const std::exception& e) {
+        return {false, e.what(), "fix the file's permissions, or remove it to use the defaults"};
+    }
+}
+
+Check check_camera(const config::Config& settings) {
+    const std::vector<std::string> cameras = list_capture_devices();
+    if (cameras.empty()) {
+        return {false, "no webcam (no video capture device under /dev)",
+                "plug a webcam in; `ls /dev/video*` should list it (a VM needs a passed-through "
+                "or virtual camera, e.g. modprobe vivid)"};
+    }
+    const std::string& device = settings.camera.device;
+    const std::string chosen = device == "auto" ? cameras.front() : device;
+    if (device != "auto" && !std::filesystem::exists(chosen)) {
+        std::string found;
+        for (const auto& camera : cameras)
+            found += (found.empty() ? "" : ", ") + camera;
+        return {false, "camera.device = " + chosen + " does not exist",
+                "set camera.device to one of: " + found + " (or auto)"};
+    }
+    if (const std::string problem = access_problem(chosen); !problem.empty()) {
+        return {false, chosen + ": " + problem,
+                "add your user to the video group: sudo usermod -aG video $USER, then log in "
+                "again"};
+    }
+    return {
+        true,
+        chosen + " can be opened (" + std::to_string(cameras.size()) + " capture device(s) in all)",
+        ""};
+}
+
+Check check_uinput() {
+    const std::string path = "/dev/uinput";
+    if (!std::filesystem::exists(path)) {
+        return {false, path + " does not exist (the uinput module is not loaded)",
+                "sudo modprobe uinput, and install packaging/modules-load.conf as "
+                "/usr/lib/modules-load.d/raypoint.conf so it loads at boot"};
+    }
+    if (const std::string problem = access_problem(path); !problem.empty()) {
+        return {false, path + ": " + problem,
+                "install packaging/70-raypoint-uinput.rules into /usr/lib/udev/rules.d (it gives "
+                "the logged-in user access, TAG+=\"uaccess\"), then sudo udevadm trigger and log "
+                "in again"};
+    }
+    return {true, path + " is writable", ""};
+}
+
+Check check_service(std::string& control_path) {
+    try {
+        control_path = default_control_path();
+    } catch (const ControlError& e) {
+        return {false, e.what(), "run raypoint from your desktop session"};
+    }
+    try {
+        const std::string reply = send_control(control_path, ControlCommand::status);
+        return {
+            true,
+            "raypoint run answers on " + control_path + ": " + reply.substr(0, reply.find('\n')),
+            ""};
+    } catch (const ControlError&) {
+        return {false, "raypoint run is not running (nothing answers on " + control_path + ")",
+                "systemctl --user enable --now raypoint, then journalctl --user -u raypoint"};
+    }
+}
+
+}  // namespace
+
+int doctor_command(std::span<const std::string_view> args) {
+    if (!args.empty()) throw UsageError(std::string(args.front()) + ": doctor takes no options");
+    int failures = 0;
+    config::Config settings;
+    print("config", check_config(settings), failures);
+    print("camera", check_camera(settings), failures);
+    print("uinput", check_uinput(), failures);
+    std::string control_path;
+    print("service", check_service(control_path), failures);
+    std::printf(failures == 0 ? "all checks passed\n" : "%d check(s) failed\n", failures);
+    return failures == 0 ? 0 : 1;
+}
+
+}  // namespace raypoint::daemon

@@ -1,0 +1,150 @@
+#include "run_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "raypoint/capture/v4l2_camera.hpp"
+#include "raypoint/cli/settings_options.hpp"
+#include "raypoint/cli/sink_option.hpp"
+#include "raypoint/cli/usage_error.hpp"
+#include "raypoint/config/config_paths.hpp"
+#include "raypoint/loop/pointer_daemon.hpp"
+#include "raypoint/output/pointer_events.hpp"
+#include "raypoint/service/log.hpp"
+
+namespace raypoint::daemon {
+namespace {
+
+struct RunOptions {
+    std::string input;  // a recorded video instead of the camera
+    bool paced = true;
+    bool realtime = false;  // --input decoded up front, replayed as a YUYV camera
+    std::optional<double> duration_s;
+    std::optional<std::string> camera;  // overrides camera.device
+    bool lock_exposure = false;         // or camera.lock_exposure
+    std::string sink = "uinput";
+    std::optional<std::string> control_path;
+    bool no_control = false;
+};
+
+double parse_duration(std::string_view text) {
+    const std::string value(text);
+    char* end = nullptr;
+    const double seconds = std::strtod(value.c_str(), &end);
+    // Up to a year: the milliseconds stay far inside the clock's range.
+    if (value.empty() || *end != '\0' || !(seconds > 0.0) || seconds > 365.0 * 86400.0) {
+        throw UsageError("--duration " + value + ": needs seconds > 0, as in --duration 60");
+    }
+    return seconds;
+}
+
+RunOptions parse_run_options(std::span<const std::string_view> args) {
+    RunOptions options;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view arg = args[i];
+        if (arg == "--input") {
+            options.input = option_value(args, i);
+        } else if (arg == "--unpaced") {
+            options.paced = false;
+        } else if (arg == "--realtime") {
+            options.realtime = true;
+        } else if (arg == "--duration") {
+            options.duration_s = parse_duration(option_value(args, i));
+        } else if (arg == "--camera") {
+            options.camera = option_value(args, i);
+        } else if (arg == "--lock-exposure") {
+            options.lock_exposure = true;
+        } else if (arg == "--sink") {
+            options.sink = option_value(args, i);
+        } else if (arg == "--control") {
+            options.control_path = std::string(option_value(args, i));
+        } else if (arg == "--no-control") {
+            options.no_control = true;
+        } else {
+            throw UsageError(std::string(arg) + ": unknown option (see raypoint --help)");
+        }
+    }
+    if (options.realtime && options.input.empty()) {
+        throw UsageError("--realtime replays a clip: it needs --input CLIP");
+    }
+    if (options.realtime && !options.paced) {
+        throw UsageError("--realtime and --unpaced contradict each other: choose one");
+    }
+    return options;
+}
+
+}  // namespace
+
+int run_command(std::span<const std::string_view> args, RecordedSourceFactory recorded) {
+    block_daemon_signals();
+    // SIGHUP re-reads the same file and re-applies the same command line over it.
+    const std::vector<std::string> kept(args.begin(), args.end());
+    const auto build_config = [kept] {
+        const std::vector<std::string_view> views(kept.begin(), kept.end());
+        std::vector<std::string_view> ignored;
+        return parse_settings_options(views, ignored, config::find_config_file());
+    };
+    std::vector<std::string_view> rest;
+    DaemonParts parts;
+    parts.config = parse_settings_options(args, rest, config::find_config_file());
+    parts.reload = build_config;
+    const RunOptions options = parse_run_options(rest);
+
+    const auto& preprocess = parts.config.core.preprocess;
+    if (options.duration_s) {
+        parts.duration = std::chrono::milliseconds(std::llround(*options.duration_s * 1000.0));
+    }
+    if (!options.input.empty()) {
+        if (recorded == nullptr) {
+            throw UsageError("--input: this binary reads no video files; run it as raypoint-tools");
+        }
+        // With --duration a --realtime clip loops to fill it; without, it plays once.
+        parts.source = recorded(
+            {options.input, options.paced, options.realtime, options.duration_s.has_value()});
+        parts.stop_at_end_of_input = true;
+    } else {
+        CameraOptions camera;
+        camera.device = options.camera ? *options.camera : parts.config.camera.device;
+        camera.working = cv::Size(preprocess.work_width, preprocess.work_height);
+        camera.least = cv::Size(parts.config.camera.min_width, parts.config.camera.min_height);
+        camera.lock_exposure = options.lock_exposure || parts.config.camera.lock_exposure;
+        parts.source = std::make_unique<V4l2Camera>(camera);
+    }
+    parts.sink =
+        make_sink(parse_sink_spec(options.sink), device_profile(parts.config.core.pointer.motion));
+    if (!options.no_control) {
+        try {
+            parts.control = std::make_unique<ControlServer>(
+                options.control_path ? *options.control_path : default_control_path());
+        } catch (const ControlError& e) {
+            // The pointer works without remote control; say why there is none.
+            log::warning(std::string("no control socket: ") + e.what());
+        }
+    }
+    PointerDaemon daemon(std::move(parts));
+    return daemon.run();
+}
+
+int ctl_command(std::span<const std::string_view> args) {
+    std::optional<ControlCommand> command;
+    std::optional<std::string> path;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (args[i] == "--control") {
+            path = std::string(option_value(args, i));
+        } else if (const auto parsed = control_command_from_string(args[i]); parsed && !command) {
+            command = parsed;
+        } else {
+            throw UsageError(std::string(args[i]) +
+                             ": unknown (usage: raypoint ctl pause|resume|recenter|status)");
+        }
+    }
+    if (!command) throw UsageError("usage: raypoint ctl pause|resume|recenter|status");
+    const std::string reply = send_control(path ? *path : default_control_path(), *command);
+    std::fputs(reply.c_str(), stdout);
+    return reply.rfind("error:", 0) == 0 ? 1 : 0;
+}
+
+}  // namespace raypoint::daemon

@@ -1,0 +1,305 @@
+#include "raypoint/loop/pointer_daemon.hpp"
+
+#include <poll.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/signalfd.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+#include "raypoint/service/log.hpp"
+
+namespace raypoint::daemon {
+namespace {
+
+using Clock = RunStatistics::Clock;
+
+// The camera comes back within 2 s of being plugged in again (the promise).
+constexpr auto reopen_interval = std::chrono::milliseconds(500);
+constexpr int frame_timeout_ms = 100;
+// Without frames the loop still wakes once a second, so that STATUS= and `ctl status` show the
+// frame rate falling to 0 when a camera stalls.
+constexpr auto idle_wake = std::chrono::seconds(1);
+// A camera that stops delivering without an error (a driver that wedges, a v4l2loopback whose
+// writer quit) is lost too: buttons up, reported, reopened like an unplugged one. 2 s is ten
+// frames at the slowest low-light rate (5 fps) and a UVC camera's slow first frame.
+constexpr auto stall_timeout = std::chrono::seconds(2);
+
+std::string format_status(const char* format, double a, double b) {
+    char buffer[128];
+    std::snprintf(buffer, sizeof buffer, format, a, b);
+    return buffer;
+}
+
+}  // namespace
+
+sigset_t block_daemon_signals() {
+    sigset_t signals;
+    sigemptyset(&signals);
+    sigaddset(&signals, SIGINT);
+    sigaddset(&signals, SIGTERM);
+    sigaddset(&signals, SIGHUP);
+    // Blocked in every thread (threads inherit the mask, so this comes before any decoder or
+    // library starts one) and read from a descriptor: a signal is handled between frames, never
+    // in the middle of writing an event.
+    if (pthread_sigmask(SIG_BLOCK, &signals, nullptr) != 0) {
+        throw std::runtime_error(std::string("pthread_sigmask: ") + std::strerror(errno));
+    }
+    return signals;
+}
+
+PointerDaemon::PointerDaemon(DaemonParts parts)
+    : parts_(std::move(parts)), tracker_(std::make_unique<core::Tracker>(parts_.config.core)) {
+    const sigset_t signals = block_daemon_signals();
+    signal_fd_ = signalfd(-1, &signals, SFD_NONBLOCK | SFD_CLOEXEC);
+    if (signal_fd_ < 0) throw std::runtime_error(std::string("signalfd: ") + std::strerror(errno));
+}
+
+PointerDaemon::~PointerDaemon() {
+    if (signal_fd_ >= 0) close(signal_fd_);
+}
+
+int PointerDaemon::run() {
+    log::info("capturing from " + parts_.source->description() + ", events to " +
+              std::string(parts_.sink->name()));
+    notifier_.ready();
+    notifier_.status("initializing");
+    const auto started = Clock::now();
+    statistics_.start(started);
+    if (parts_.duration) stop_at_ = started + *parts_.duration;
+    last_frame_at_ = started;
+    unsigned ready = signal_ready | control_ready;  // both looked at before the first wait
+    for (;;) {
+        if ((ready & signal_ready) != 0 && !handle_signals()) break;
+        if ((ready & control_ready) != 0) handle_control();
+        const auto now = Clock::now();
+        if (now >= stop_at_) {
+            log::info("stopping: --duration reached");
+            break;
+        }
+        if (camera_lost_) {
+            if (parts_.stop_at_end_of_input) break;
+            // Alive and handling it: keep the watchdog fed while the camera is away.
+            if (notifier_.watchdog_due(now)) notifier_.pet(now);
+            if (now >= next_reopen_) {
+                next_reopen_ = now + reopen_interval;
+                if (parts_.source->reopen()) {
+                    camera_lost_ = false;
+                    last_frame_at_ = Clock::now();
+                    log::info("camera back: " + parts_.source->description());
+                }
+            }
+            ready = camera_lost_ ? wait_for_events(-1, std::min(next_reopen_, stop_at_))
+                                 : signal_ready | control_ready;
+            continue;
+        }
+        Capture capture;
+        if (const int fd = parts_.source->wait_fd(); fd >= 0) {
+            ready = wait_for_events(fd, std::min(now + idle_wake, stop_at_));
+            if ((ready & source_ready) != 0) capture = parts_.source->next(0);
+        } else {
+            // A source without a descriptor (a decoded video) waits inside next(); signals and
+            // requests are looked at between its frames.
+            ready = signal_ready | control_ready;
+            capture = parts_.source->next(frame_timeout_ms);
+        }
+        switch (capture.status) {
+            case CaptureStatus::frame:
+                on_frame(capture);
+                last_frame_at_ = Clock::now();
+                // Only frames feed the watchdog (and the lost camera's retries): a loop stuck in
+                // a driver call gets the service restarted.
+                if (notifier_.watchdog_due(now)) notifier_.pet(now);
+                break;
+            case CaptureStatus::timeout:
+                if (Clock::now() - last_frame_at_ >= stall_timeout) on_lost("no frame for 2 s");
+                break;
+            case CaptureStatus::lost:
+                on_lost(capture.reason);
+                break;
+        }
+        report(Clock::now());
+    }
+    release_buttons();
+    notifier_.stopping();
+    log::info("stopped after " + std::to_string(statistics_.frames()) + " frames");
+    log_cost();
+    return 0;
+}
+
+unsigned PointerDaemon::wait_for_events(int source_fd, Clock::time_point deadline) const noexcept {
+    std::array<pollfd, 3> fds{};
+    std::size_t count = 0;
+    fds[count++] = pollfd{signal_fd_, POLLIN, 0};
+    const std::size_t control = parts_.control ? count++ : fds.size();
+    if (control < fds.size()) fds[control] = pollfd{parts_.control->fd(), POLLIN, 0};
+    const std::size_t source = source_fd >= 0 ? count++ : fds.size();
+    if (source < fds.size()) fds[source] = pollfd{source_fd, POLLIN, 0};
+    // Rounded up: woken before the deadline, the loop would only go back to sleep.
+    const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now());
+    const auto timeout_ms = static_cast<int>(std::clamp<std::chrono::milliseconds::rep>(
+        left.count(), 0, std::numeric_limits<int>::max()));
+    if (poll(fds.data(), count, timeout_ms) <= 0) return 0;  // the deadline, or EINTR
+    unsigned ready = 0;
+    // Any event counts: POLLERR or POLLHUP from a camera is its loss, for next() to report.
+    if (fds[0].revents != 0) ready |= signal_ready;
+    if (control < fds.size() && fds[control].revents != 0) ready |= control_ready;
+    if (source < fds.size() && fds[source].revents != 0) ready |= source_ready;
+    return ready;
+}
+
+void PointerDaemon::on_frame(const Capture& capture) {
+    const core::Timestamp handed = monotonic_now_us();
+    const core::FrameView& frame = capture.frame;
+    core::FrameResult result = tracker_->process(frame);
+    last_timestamp_ = frame.timestamp;
+    last_result_ = result;
+    statistics_.count_frame();
+    if (!pointer_) {
+        pointer_.emplace(parts_.config.core.pointer,
+                         static_cast<double>(frame.width) / static_cast<double>(frame.height));
+    }
+    if (paused_) return;
+    // `recenter`: the hand's place at that moment is the middle of the view from then on.
+    result.position.x += recenter_offset_.x;
+    result.position.y += recenter_offset_.y;
+    result.centroid += recenter_offset_;
+    parts_.sink->emit(pointer_->update(result), frame.timestamp);
+    // After the write returned: uinput's write(2) of the events, the file sink's fflush.
+    statistics_.record_latency(capture.ready, handed, monotonic_now_us());
+}
+
+void PointerDaemon::on_lost(const std::string& reason) {
+    release_buttons();
+    if (reason == end_of_input) {
+        camera_lost_ = true;
+        return;
+    }
+    ++lost_count_;
+    camera_lost_ = true;
+    lost_reason_ = reason;
+    parts_.source->release();
+    next_reopen_ = Clock::now() + reopen_interval;
+    log::warning("camera lost: " + reason + "; retrying every 0.5 s");
+    notifier_.status("camera lost: " + reason);
+}
+
+void PointerDaemon::release_buttons() {
+    if (pointer_) parts_.sink->emit(pointer_->release_all(), last_timestamp_);
+    parts_.sink->release_all(last_timestamp_);
+}
+
+bool PointerDaemon::handle_signals() {
+    signalfd_siginfo info{};
+    while (read(signal_fd_, &info, sizeof info) == static_cast<ssize_t>(sizeof info)) {
+        switch (info.ssi_signo) {
+            case SIGHUP:
+                reload();
+                break;
+            case SIGINT:
+            case SIGTERM:
+                log::info(std::string("stopping on ") +
+                          strsignal(static_cast<int>(info.ssi_signo)));
+                return false;
+            default:
+                break;
+        }
+    }
+    return true;
+}
+
+void PointerDaemon::reload() {
+    if (!parts_.reload) return;
+    try {
+        config::Config fresh = parts_.reload();
+        release_buttons();
+        parts_.config = fresh;
+        tracker_ = std::make_unique<core::Tracker>(parts_.config.core);
+        pointer_.reset();
+        log::info("configuration reloaded");
+    } catch (const std::exception& e) {
+        log::error(std::string("reload failed, keeping the running configuration: ") + e.what());
+    }
+}
+
+void PointerDaemon::handle_control() {
+    if (!parts_.control) return;
+    while (const auto command = parts_.control->next_request()) {
+        switch (*command) {
+            case ControlCommand::pause:
+                if (!paused_) release_buttons();
+                paused_ = true;
+                parts_.control->reply("paused\n");
+                break;
+            case ControlCommand::resume:
+                paused_ = false;
+                parts_.control->reply("resumed\n");
+                break;
+            case ControlCommand::recenter:
+                if (last_result_.has_position) {
+                    recenter_offset_ = {0.5 - last_result_.position.x,
+                                        0.5 - last_result_.position.y};
+                    parts_.control->reply("recentered\n");
+                } else {
+                    parts_.control->reply("not tracking: nothing to recenter on\n");
+                }
+                break;
+            case ControlCommand::status:
+                parts_.control->reply(status_text());
+                break;
+        }
+    }
+}
+
+void PointerDaemon::report(Clock::time_point now) {
+    if (!statistics_.update(now)) return;
+    // The STATUS= line costs a few allocations a second; outside systemd it has no reader.
+    if (!notifier_.enabled()) return;
+    std::string state =
+        camera_lost_ ? "camera lost" : std::string(core::to_string(last_result_.state));
+    if (paused_) state += " (paused)";
+    notifier_.status(state + format_status(", %.1f fps, CPU %.1f%%", statistics_.fps(),
+                                           statistics_.cpu_percent()));
+}
+
+std::string PointerDaemon::status_text() const {
+    std::string text = "state: " + std::string(core::to_string(last_result_.state)) + "\n";
+    text += std::string("paused: ") + (paused_ ? "yes" : "no") + "\n";
+    text += "source: " + parts_.source->description() +
+            (camera_lost_ ? " (lost: " + lost_reason_ + ")" : "") + "\n";
+    text += "sink: " + std::string(parts_.sink->name()) + "\n";
+    text += format_status("fps: %.1f\ncpu: %.1f%% of one core\n", statistics_.fps(),
+                          statistics_.cpu_percent());
+    text += "frames: " + std::to_string(statistics_.frames()) + "\n";
+    text += "camera losses: " + std::to_string(lost_count_) + "\n";
+    text += statistics_.cost_text(Clock::now());
+    if (last_result_.has_position) {
+        char position[96];
+        std::snprintf(position, sizeof position, "position: %.3f %.3f %.3f\n",
+                      last_result_.position.x, last_result_.position.y, last_result_.position.z);
+        text += position;
+    }
+    return text;
+}
+
+void PointerDaemon::log_cost() const {
+    // One block, a line a log entry: what the run cost (run_statistics.hpp says what each
+    // figure counts) and where the frames came from, which says whether capture is in it.
+    log::info("cost of this run:");
+    const std::string text = statistics_.cost_text(Clock::now());
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t end = text.find('\n', start);
+        log::info("  " + text.substr(start, end - start));
+        start = end == std::string::npos ? text.size() : end + 1;
+    }
+    log::info("  source: " + parts_.source->description());
+}
+
+}  // namespace raypoint::daemon

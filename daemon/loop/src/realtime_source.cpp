@@ -1,0 +1,104 @@
+#include "raypoint/loop/realtime_source.hpp"
+
+#include <poll.h>
+#include <sys/timerfd.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <utility>
+
+#include "raypoint/loop/run_statistics.hpp"
+
+namespace raypoint::daemon {
+namespace {
+
+// A camera with four buffers (v4l2_camera.cpp) has one lent to the loop and three to fill.
+constexpr std::int64_t waiting_limit = 3;
+
+}  // namespace
+
+RealtimeSource::RealtimeSource(YuyvClip clip, std::string label, bool loop)
+    : clip_(std::move(clip)), label_(std::move(label)), loop_(loop) {
+    if (clip_.frame_count() == 0) throw std::invalid_argument(label_ + ": the clip has no frames");
+    timer_fd_ = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
+    if (timer_fd_ < 0) {
+        throw std::runtime_error(std::string("timerfd_create(CLOCK_MONOTONIC): ") +
+                                 std::strerror(errno) +
+                                 " (--realtime needs timerfd, Linux 2.6.25)");
+    }
+    arm(monotonic_now_us());  // the first frame is due at once
+}
+
+RealtimeSource::~RealtimeSource() {
+    if (timer_fd_ >= 0) close(timer_fd_);
+}
+
+core::Timestamp RealtimeSource::due(std::int64_t serial) const noexcept {
+    return start_ + std::llround(static_cast<double>(serial) * 1e6 / clip_.fps());
+}
+
+void RealtimeSource::arm(core::Timestamp when) noexcept {
+    itimerspec at{};
+    at.it_value.tv_sec = static_cast<time_t>(when / 1'000'000);
+    at.it_value.tv_nsec = static_cast<long>(when % 1'000'000) * 1000;
+    // Cannot fail with a valid descriptor and value; a past instant expires at once.
+    (void)timerfd_settime(timer_fd_, TFD_TIMER_ABSTIME, &at, nullptr);
+}
+
+Capture RealtimeSource::next(int timeout_ms) {
+    if (finished_) return end_of_input_capture();
+    Capture capture;
+    core::Timestamp now = monotonic_now_us();
+    // A frame already due (the loop is behind) is taken without asking the timer, which may
+    // not have fired yet for an instant in the past.
+    if (start_ < 0 || due(serial_) > now) {
+        pollfd timer{timer_fd_, POLLIN, 0};
+        if (poll(&timer, 1, timeout_ms) <= 0) return capture;  // timeout (or EINTR: asked again)
+        now = monotonic_now_us();
+    }
+    std::uint64_t expirations = 0;
+    (void)read(timer_fd_, &expirations, sizeof expirations);  // unreadable until armed again
+    if (start_ < 0) start_ = now;
+    // The newest frame due by now; with more than `waiting_limit` waiting, the older ones were
+    // overwritten, as in a camera's full buffer queue.
+    const auto newest = static_cast<std::int64_t>(
+        std::floor(static_cast<double>(now - start_) * clip_.fps() / 1e6));
+    if (newest - serial_ >= waiting_limit) {
+        dropped_ += newest - waiting_limit + 1 - serial_;
+        serial_ = newest - waiting_limit + 1;
+    }
+    if (!loop_ && serial_ >= clip_.frame_count()) {
+        finished_ = true;
+        return end_of_input_capture();
+    }
+    const core::Timestamp when = due(serial_);
+    if (when > now) {  // woken before the frame was due (a clock step): wait for it
+        arm(when);
+        return capture;
+    }
+    capture.frame = clip_.view(static_cast<int>(serial_ % clip_.frame_count()), when);
+    capture.ready = when;
+    capture.status = CaptureStatus::frame;
+    ++serial_;
+    ++delivered_;
+    arm(due(serial_));  // also after the last frame: then next() says "end of input"
+    return capture;
+}
+
+std::string RealtimeSource::description() const {
+    const double megabytes = static_cast<double>(clip_.memory_bytes()) / (1024.0 * 1024.0);
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  " (replayed in real time as YUYV %dx%d at %.2f fps, %d frames%s; %.1f MiB of "
+                  "frames held in memory, not a camera's cost; %lld delivered, %lld dropped)",
+                  clip_.size().width, clip_.size().height, clip_.fps(), clip_.frame_count(),
+                  loop_ ? ", looped" : "", megabytes, static_cast<long long>(delivered_),
+                  static_cast<long long>(dropped_));
+    return label_ + text;
+}
+
+}  // namespace raypoint::daemon

@@ -1,0 +1,16 @@
+#include "recorded_source.hpp"
+
+#include "clip_loader.hpp"
+#include "file_frame_source.hpp"
+#include "raypoint/loop/realtime_source.hpp"
+
+namespace raypoint::daemon {
+
+std::unique_ptr<FrameSource> make_recorded_source(const RecordedInput& input) {
+    if (input.realtime) {
+        return std::make_unique<RealtimeSource>(load_yuyv_clip(input.path), input.path, input.loop);
+    }
+    return std::make_unique<FileFrameSource>(input.path, input.paced);
+}
+
+}  // namespace raypoint::daemon
