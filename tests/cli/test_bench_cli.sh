@@ -9,7 +9,7 @@ raypoint=$1
 render=$2
 . "$(dirname "$0")/common.sh"
 
-# 5 s: the target enters at 2.5 s and is scored from 3.5 s on (score.py's grace), 45 frames.
+# 5 s: the target enters at 2.5 s and is scored from 3.5 s on (the 1 s grace, docs/scoring.md), 45 frames.
 "$render" --preset ideal --seconds 5 --out "$work/ideal" >/dev/null || { echo "cannot render"; exit 1; }
 systems="raypoint ray|raypoint iterative-ray|raypoint iterative-ny-ray|raypoint raster|camshift|kcf|csrt|mil"
 
