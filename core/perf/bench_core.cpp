@@ -1,6 +1,7 @@
 // The whole core, frame in -> position out (Tracker::process), in the steady state of a
 // tracked target: every input size and format, each instruction set at 640x480, and the
-// estimator's n, y, m around the defaults at 640x480 BGR (issue 5: <= 150 us at 640x480).
+// estimator's n, y, m around the defaults at 640x480 BGR (target: <= 150 us at 640x480,
+// docs/performance.md).
 
 #include <benchmark/benchmark.h>
 

@@ -18,7 +18,7 @@ struct BenchClip {
 };
 
 // A video file (with the truth beside it when its folder has a truth.jsonl) or a scene folder
-// holding video.mp4 (as score.py takes SCENE_DIR). At most `max_frames` frames (0: all).
+// holding video.mp4 (a scene folder, docs/scoring.md). At most `max_frames` frames (0: all).
 // Throws InputError.
 BenchClip load_clip(const std::string& argument, int max_frames);
 

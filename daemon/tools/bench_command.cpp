@@ -116,8 +116,8 @@ ClipResults measure(const BenchClip& clip, const core::Settings& settings,
         results.systems.push_back(run_raypoint(clip, variant, start));
     }
     // MIL (and CSRT, KCF) draw from OpenCV's global generator: start each clip's peers from its
-    // default seed, as score.py's process a scene does, so a clip's figures do not depend on
-    // the clips before it. They still depend on the peers before them, as in score.py.
+    // default seed, as the scoring method's process a scene does, so a clip's figures do not depend
+    // on the clips before it. They still depend on the peers before them, as in the scoring method.
     cv::theRNG() = cv::RNG();
     for (const PeerKind peer : peers) {
         progress(clip.name + ": " + std::string(to_string(peer)));

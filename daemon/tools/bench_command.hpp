@@ -7,7 +7,7 @@ namespace raypoint::daemon {
 
 // `raypoint bench [CLIP...]`: raypoint's core (each estimator) against OpenCV's CamShift, KCF,
 // CSRT and MIL on the same decoded frames: microseconds a frame (median, p95, ratio to the
-// configured estimator) and accuracy by ../shared/tools/score.py's rules. Without CLIP, the
+// configured estimator) and accuracy by the scoring method (docs/scoring.md). Without CLIP, the
 // project's rendered scenes.
 int bench_command(std::span<const std::string_view> args);
 

@@ -41,7 +41,8 @@ std::vector<BenchRow> bench_rows(const std::vector<ClipResults>& clips,
 
 void print_rows(std::FILE* out, const std::vector<BenchRow>& rows, BenchFormat format);
 
-// numpy's median and linear-interpolation percentile, so the figures compare with score.py's.
+// numpy's median and linear-interpolation percentile, so the figures compare with the scoring
+// method's (docs/scoring.md).
 double percentile(std::vector<double> values, double fraction);
 
 }  // namespace raypoint::daemon

@@ -14,8 +14,9 @@ double microseconds_since(Clock::time_point begin) {
     return std::chrono::duration<double, std::micro>(Clock::now() - begin).count();
 }
 
-// A peer's box as score.py reports it: its centre as the centroid, no area, and the square
-// root of its area in pixels as the depth cue (which correlates with 1 / depth when it works).
+// A peer's box as the scoring method reports it: its centre as the centroid, no area, and the
+// square root of its area in pixels as the depth cue (which correlates with 1 / depth when it
+// works).
 core::FrameResult peer_result(const std::optional<cv::Rect>& box, cv::Size frame) {
     core::FrameResult result;
     if (!box) return result;
@@ -27,7 +28,8 @@ core::FrameResult peer_result(const std::optional<cv::Rect>& box, cv::Size frame
     return result;
 }
 
-// Truth lines past the last decoded frame count as frames without an answer, as in score.py.
+// Truth lines past the last decoded frame count as frames without an answer, as in the scoring
+// method.
 void finish(const BenchClip& clip, scene::Evaluator& evaluator, SystemResult& out) {
     if (!clip.truth) return;
     for (std::size_t i = clip.frames.size(); i < clip.truth->truth.size(); ++i)
@@ -44,7 +46,7 @@ PeerStart peer_start(const BenchClip& clip) {
         for (std::size_t i = 0; i < truth.size() && i < clip.frames.size(); ++i) {
             const scene::Truth& t = truth[i];
             if (!t.present || !t.moving) continue;
-            // int() of the pixel box, as score.py passes it.
+            // int() of the pixel box, as the scoring method passes it.
             return {static_cast<int>(i), cv::Rect(static_cast<int>(t.bx * size.width),
                                                   static_cast<int>(t.by * size.height),
                                                   static_cast<int>(t.bw * size.width),

@@ -1,6 +1,7 @@
 #pragma once
 // Runs raypoint's core and the OpenCV peers over one clip's decoded frames: the time each
-// spends a frame and, when the clip has ground truth, its accuracy by score.py's rules.
+// spends a frame and, when the clip has ground truth, its accuracy by the scoring method
+// (docs/scoring.md).
 
 #include <optional>
 #include <string>
@@ -20,7 +21,7 @@ struct SystemResult {
     std::string error;  // a peer that threw (an OpenCV assertion): a row, not a crash
 };
 
-// Where the peers start. With truth, score.py's rule: the first frame where the target is
+// Where the peers start. With truth, the scoring method's rule: the first frame where the target is
 // present and moving, from its true box. Without truth (timing only), frame 0 and a centred box
 // of a fifth of the frame each way.
 struct PeerStart {

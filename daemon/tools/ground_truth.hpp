@@ -1,6 +1,7 @@
 #pragma once
-// The ground truth of a scene folder (../shared/scenes/README.md, raypoint-render-scene's
-// output): truth.jsonl, one line a frame, and masks.npz, the target's visible pixels.
+// The ground truth of a scene folder (raypoint-render-scene's output; docs/scoring.md, "What is
+// scored: a scene folder"): truth.jsonl, one line a frame, and masks.npz, the target's visible
+// pixels.
 
 #include <filesystem>
 #include <optional>

@@ -7,9 +7,9 @@
 namespace raypoint::daemon {
 namespace {
 
-// score.py's CamShift: a 16-bin hue histogram of the first box (pixels with saturation >= 30
-// and value >= 20), back-projected on every frame, masked the same way, then CamShift with at
-// most 10 iterations or 1 px of movement.
+// The scoring method's CamShift (docs/scoring.md): a 16-bin hue histogram of the first box (pixels
+// with saturation >= 30 and value >= 20), back-projected on every frame, masked the same way, then
+// CamShift with at most 10 iterations or 1 px of movement.
 class CamShiftPeer final : public PeerTracker {
   public:
     void init(const cv::Mat& bgr, const cv::Rect& box) override {

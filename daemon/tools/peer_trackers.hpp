@@ -1,7 +1,7 @@
 #pragma once
 // What a user could run instead of raypoint: OpenCV's CamShift (hue back-projection, as in
 // OpenCV's camshift sample), KCF and CSRT (contrib tracking) and MIL (video). Each is given
-// the target's box on its first frame, as ../shared/tools/score.py starts them.
+// the target's box on its first frame, as the scoring method starts them (docs/scoring.md).
 
 #include <memory>
 #include <optional>

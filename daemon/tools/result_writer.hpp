@@ -1,5 +1,5 @@
 #pragma once
-// One line a frame on stdout: JSONL (the schema ../shared/tools/score.py reads) or CSV.
+// One line a frame on stdout: JSONL (the schema the scoring method reads, docs/scoring.md) or CSV.
 
 #include <cstdio>
 

@@ -1,8 +1,9 @@
-// Scene tests: the tracker on the project's own rendered clips (tests/scene), scored against
-// their exact truth with the rules of ../shared/tools/score.py. Thresholds: the where it
-// gives one (detection within 0.5 s; >= 95% on target for the ideal and non-convex scenes;
-// median centroid error <= 2 px for the sphere and <= 4 px for the hand at 160x120; z against
-// 1/depth r >= 0.9), otherwise what the scene measured on 2026-11-21 less a margin.
+// Scene tests: the tracker on the project's own rendered clips (daemon/scene), scored against
+// their exact truth by the scoring method (docs/scoring.md). Thresholds: the project's accuracy
+// requirements where there is one (detection within 0.5 s; >= 95% on target for the ideal and
+// non-convex scenes; median centroid error <= 2 px for the sphere and <= 4 px for the hand at
+// 160x120; z against 1/depth r >= 0.9), otherwise what the scene measured on 2026-11-21 less a
+// margin.
 
 #include <gtest/gtest.h>
 
@@ -80,8 +81,8 @@ TEST_P(Scene, MeetsItsThresholds) {
 // pushes, pauses and 15 fps blur have lower r, and no threshold is asserted for them.
 INSTANTIATE_TEST_SUITE_P(
     Presets, Scene,
-    ::testing::Values(Expectation{"ideal", 0.95, 2.0, 0.9},      // the sphere thresholds
-                      Expectation{"nonconvex", 0.95, 4.0, 0.9},  // the hand thresholds
+    ::testing::Values(Expectation{"ideal", 0.95, 2.0, 0.9},      // the sphere's requirements
+                      Expectation{"nonconvex", 0.95, 4.0, 0.9},  // the hand's requirements
                       Expectation{"lowlight", 0.90, 2.0, 0.7},   // 10 fps, noise, blur
                       Expectation{"interfering", 0.90, 2.0, 0.85},
                       Expectation{"hd60", 0.90, 4.0, 0.9},      // 60 fps

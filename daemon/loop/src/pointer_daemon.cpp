@@ -21,7 +21,8 @@ namespace {
 
 using Clock = RunStatistics::Clock;
 
-// The camera comes back within 2 s of being plugged in again (the issue's promise).
+// The camera comes back within 2 s of being plugged in again (docs/design.md, "Losing and finding
+// the camera").
 constexpr auto reopen_interval = std::chrono::milliseconds(500);
 constexpr int frame_timeout_ms = 100;
 // Without frames the loop still wakes once a second, so that STATUS= and `ctl status` show the

@@ -6,7 +6,8 @@
 namespace raypoint::scene {
 namespace {
 
-// numpy's median (score.py's): the mean of the two middle values of an even count.
+// numpy's median, as the scoring method takes it (docs/scoring.md): the mean of the two middle
+// values of an even count.
 std::optional<double> median(std::vector<double> values) {
     if (values.empty()) return std::nullopt;
     const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
@@ -37,8 +38,8 @@ std::optional<double> correlation(const std::vector<double>& a, const std::vecto
     return cov / std::sqrt(var_a * var_b);
 }
 
-// Whether any mask pixel lies within `pad` pixels (a square, as score.py's dilated window) of
-// the point given as fractions of the frame.
+// Whether any mask pixel lies within `pad` pixels (a square, as the scoring method's dilated
+// window) of the point given as fractions of the frame.
 bool near_mask(const cv::Mat& mask, cv::Point2d point, int pad) {
     const int px = std::clamp(static_cast<int>(point.x * mask.cols), 0, mask.cols - 1);
     const int py = std::clamp(static_cast<int>(point.y * mask.rows), 0, mask.rows - 1);

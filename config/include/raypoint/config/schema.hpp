@@ -1,5 +1,5 @@
 #pragma once
-// The one schema of every setting (DEVELOPERS.md rule 4): section, key, type, default, range and
+// The one schema of every setting (docs/design.md rule 4): section, key, type, default, range and
 // a one-line doc. Parsing (--set, INI), validation, print-config and the docs all come from it.
 
 #include <functional>

@@ -6,7 +6,7 @@
 namespace raypoint::core {
 
 // Microseconds on a monotonic clock. Only differences matter: the core never reads a clock,
-// so a recorded clip replays exactly as it ran live (DEVELOPERS.md rule 2).
+// so a recorded clip replays exactly as it ran live (docs/design.md rule 2).
 using Timestamp = std::int64_t;
 
 constexpr Timestamp seconds_to_us(double seconds) noexcept {

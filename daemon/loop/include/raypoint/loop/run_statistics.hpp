@@ -1,8 +1,9 @@
 #pragma once
 // What `raypoint ctl status`, systemd's STATUS= and the summary at exit report: frames a second
-// and CPU over the last second or so, and over the whole run the daemon's cost (issue 5): CPU
-// time from getrusage (user + system, every thread of the process) over the wall time since
-// start(), peak RSS (ru_maxrss), and the latencies from frame ready to the output write.
+// and CPU over the last second or so, and over the whole run the daemon's cost
+// (docs/performance.md): CPU time from getrusage (user + system, every thread of the process) over
+// the wall time since start(), peak RSS (ru_maxrss), and the latencies from frame ready to the
+// output write.
 
 #include <sys/resource.h>
 

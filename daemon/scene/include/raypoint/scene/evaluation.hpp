@@ -1,7 +1,6 @@
 #pragma once
-// Scores a tracker's output against a rendered clip's truth, with the rules of
-// ../shared/tools/score.py, so the project's own scene tests measure what the development
-// scorer measures.
+// Scores a tracker's output against a rendered clip's truth by the project's scoring method
+// (docs/scoring.md), so the scene tests measure what every accuracy figure in docs/ measures.
 
 #include <optional>
 #include <vector>
