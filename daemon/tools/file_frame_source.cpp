@@ -20,8 +20,10 @@ Capture FileFrameSource::next(int timeout_ms) {
     }
     if (!current_) {
         finished_ = true;
+        // A file that cannot be read on is lost, with the reason; one that is read to its end
+        // has ended.
+        if (capture.reason.empty()) return end_of_input_capture();
         capture.status = CaptureStatus::lost;
-        if (capture.reason.empty()) capture.reason = end_of_input;
         return capture;
     }
     if (paced_) {

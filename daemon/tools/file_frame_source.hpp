@@ -23,7 +23,7 @@ class FileFrameSource final : public FrameSource {
     const std::string& last_error() const noexcept override { return error_; }
     std::string description() const override;
 
-    // The video has no more frames: `next()` reports lost with reason "end of input".
+    // The video has no more frames: `next()` reports CaptureStatus::ended.
     bool finished() const noexcept { return finished_; }
     cv::Size size() const noexcept { return video_.size(); }
 

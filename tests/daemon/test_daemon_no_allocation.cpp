@@ -46,7 +46,7 @@ class CountingSource final : public FrameSource {
             test::start_counting_allocations();
         }
         Capture capture = inner_->next(timeout_ms);
-        if (capture.status == CaptureStatus::lost && probe_.counting) {
+        if (capture.status == CaptureStatus::ended && probe_.counting) {
             probe_.allocations = test::stop_counting_allocations();
             probe_.counting = false;
         }
@@ -110,7 +110,7 @@ TEST(DaemonNoAllocation, FrameLoopWithTheNullSink) {
     parts.source = std::move(source);
     parts.sink = std::make_unique<MotionCountingSink>(probe);
     parts.control = std::make_unique<ControlServer>(socket.string());
-    parts.stop_at_end_of_input = true;
+    parts.exit_when_lost = true;
     PointerDaemon daemon(std::move(parts));
     EXPECT_EQ(daemon.run(), 0);
 

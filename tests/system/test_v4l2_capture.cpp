@@ -60,9 +60,9 @@ void capture(V4l2Camera& camera, int count, const CameraOptions& options) {
 int main() {
     const char* env = std::getenv("RAYPOINT_TEST_CAMERA");
     CameraOptions options;
-    options.device = env && *env ? env : "auto";
+    options.settings.device = env && *env ? env : "auto";
     const auto devices = raypoint::daemon::list_capture_devices();
-    if (options.device == "auto" && devices.empty()) {
+    if (options.settings.device == "auto" && devices.empty()) {
         std::printf(
             "SKIP: no video capture device (/dev/video*) on this machine; load vivid "
             "(modprobe vivid) or set RAYPOINT_TEST_CAMERA\n");
@@ -82,7 +82,7 @@ int main() {
         capture(camera, 3, options);
         camera.release();
 
-        options.lock_exposure = true;
+        options.settings.lock_exposure = true;
         V4l2Camera locked(options);
         std::printf("with lock_exposure: %s\n", locked.description().c_str());
         check(locked.exposure_lock().size() == 3, "one lock report a control");

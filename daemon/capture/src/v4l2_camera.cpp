@@ -47,17 +47,17 @@ V4l2Camera::~V4l2Camera() {
 }
 
 void V4l2Camera::open_device() {
-    if (options_.device != "auto") {
+    if (options_.settings.device != "auto") {
         std::error_code error;
         // A by-id/by-path link names the same camera after a replug; resolve it every time.
-        const fs::path node = fs::canonical(options_.device, error);
+        const fs::path node = fs::canonical(options_.settings.device, error);
         if (error) {
-            throw CameraError(camera_error_message(options_.device, "open", error.value(),
+            throw CameraError(camera_error_message(options_.settings.device, "open", error.value(),
                                                    list_capture_devices()));
         }
-        const std::string label = node.string() == options_.device
-                                      ? options_.device
-                                      : options_.device + " (" + node.string() + ")";
+        const std::string& device = options_.settings.device;
+        const std::string label =
+            node.string() == device ? device : device + " (" + node.string() + ")";
         open_node(node.string(), label);
         return;
     }
@@ -104,7 +104,7 @@ void V4l2Camera::open_node(const std::string& node, const std::string& label) {
                           "--list-devices`)");
     }
     negotiate_format();
-    if (options_.lock_exposure) lock_controls();
+    if (options_.settings.lock_exposure) lock_controls();
     start_streaming();
 }
 

@@ -104,13 +104,13 @@ int run_command(std::span<const std::string_view> args, RecordedSourceFactory re
         // With --duration a --realtime clip loops to fill it; without, it plays once.
         parts.source = recorded(
             {options.input, options.paced, options.realtime, options.duration_s.has_value()});
-        parts.stop_at_end_of_input = true;
+        parts.exit_when_lost = true;
     } else {
         CameraOptions camera;
-        camera.device = options.camera ? *options.camera : parts.config.camera.device;
+        camera.settings = parts.config.camera;
+        if (options.camera) camera.settings.device = *options.camera;
+        if (options.lock_exposure) camera.settings.lock_exposure = true;
         camera.working = cv::Size(preprocess.work_width, preprocess.work_height);
-        camera.least = cv::Size(parts.config.camera.min_width, parts.config.camera.min_height);
-        camera.lock_exposure = options.lock_exposure || parts.config.camera.lock_exposure;
         parts.source = std::make_unique<V4l2Camera>(camera);
     }
     parts.sink =

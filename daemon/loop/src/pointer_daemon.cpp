@@ -33,6 +33,13 @@ constexpr auto idle_wake = std::chrono::seconds(1);
 // frames at the slowest low-light rate (5 fps) and a UVC camera's slow first frame.
 constexpr auto stall_timeout = std::chrono::seconds(2);
 
+// "2 s", "0.5 s": a duration as the log states it, from the constant itself.
+std::string seconds_text(std::chrono::duration<double> duration) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g s", duration.count());
+    return buffer;
+}
+
 std::string format_status(const char* format, double a, double b) {
     char buffer[128];
     std::snprintf(buffer, sizeof buffer, format, a, b);
@@ -85,8 +92,9 @@ int PointerDaemon::run() {
             log::info("stopping: --duration reached");
             break;
         }
+        if (input_ended_) break;
         if (camera_lost_) {
-            if (parts_.stop_at_end_of_input) break;
+            if (parts_.exit_when_lost) break;
             // Alive and handling it: keep the watchdog fed while the camera is away.
             if (notifier_.watchdog_due(now)) notifier_.pet(now);
             if (now >= next_reopen_) {
@@ -120,10 +128,16 @@ int PointerDaemon::run() {
                 if (notifier_.watchdog_due(now)) notifier_.pet(now);
                 break;
             case CaptureStatus::timeout:
-                if (Clock::now() - last_frame_at_ >= stall_timeout) on_lost("no frame for 2 s");
+                if (Clock::now() - last_frame_at_ >= stall_timeout) {
+                    on_lost("no frame for " + seconds_text(stall_timeout));
+                }
                 break;
             case CaptureStatus::lost:
                 on_lost(capture.reason);
+                break;
+            case CaptureStatus::ended:
+                release_buttons();
+                input_ended_ = true;
                 break;
         }
         report(Clock::now());
@@ -179,16 +193,12 @@ void PointerDaemon::on_frame(const Capture& capture) {
 
 void PointerDaemon::on_lost(const std::string& reason) {
     release_buttons();
-    if (reason == end_of_input) {
-        camera_lost_ = true;
-        return;
-    }
     ++lost_count_;
     camera_lost_ = true;
     lost_reason_ = reason;
     parts_.source->release();
     next_reopen_ = Clock::now() + reopen_interval;
-    log::warning("camera lost: " + reason + "; retrying every 0.5 s");
+    log::warning("camera lost: " + reason + "; retrying every " + seconds_text(reopen_interval));
     notifier_.status("camera lost: " + reason);
 }
 

@@ -85,7 +85,7 @@ Capture RealtimeSource::next(int timeout_ms) {
     capture.status = CaptureStatus::frame;
     ++serial_;
     ++delivered_;
-    arm(due(serial_));  // also after the last frame: then next() says "end of input"
+    arm(due(serial_));  // also after the last frame: then next() says ended
     return capture;
 }
 

@@ -8,11 +8,12 @@
 namespace raypoint::daemon {
 
 // What next() got. Per frame, nothing throws: a lost camera is a status the loop handles
-// (release the buttons, reopen() every 0.5 s), not an exception unwinding through it.
+// (release the buttons, reopen() it at intervals), not an exception unwinding through it.
 enum class CaptureStatus {
     frame,    // `Capture::frame` holds a new frame
     timeout,  // no frame within the timeout (the camera is slow, covered, or stalled)
     lost,     // the device failed or disappeared (ENODEV, EIO, POLLERR); call reopen()
+    ended,    // a recorded source has delivered its last frame; a camera never ends
 };
 
 struct Capture {
@@ -26,12 +27,9 @@ struct Capture {
     core::Timestamp ready = -1;
 };
 
-// A recorded source's last word: lost, with this reason, which the loop takes as the end of the
-// input rather than a camera to reopen.
-inline constexpr const char* end_of_input = "end of input";
-
+// A recorded source's last word, for every call after its last frame.
 inline Capture end_of_input_capture() {
-    return Capture{CaptureStatus::lost, {}, end_of_input};
+    return Capture{CaptureStatus::ended, {}, {}};
 }
 
 class FrameSource {

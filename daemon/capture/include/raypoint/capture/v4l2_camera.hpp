@@ -15,35 +15,33 @@
 #include "raypoint/capture/camera_format.hpp"
 #include "raypoint/capture/frame_source.hpp"
 #include "raypoint/capture/jpeg_decoder.hpp"
+#include "raypoint/config/config.hpp"
 
 namespace raypoint::daemon {
 
 struct CameraOptions {
-    // "/dev/video0", a stable link such as "/dev/v4l/by-id/usb-...-video-index0" (resolved on
-    // every open, so it follows the camera to a new /dev/videoN after a replug), or "auto": the
-    // first /dev/videoN (in numeric order) that is a streaming capture device and delivers a
-    // frame within first_frame_timeout_ms.
-    std::string device = "auto";
+    // The user's [camera] settings (config.hpp):
+    // - device: "/dev/video0", a stable link such as "/dev/v4l/by-id/usb-...-video-index0"
+    //   (resolved on every open, so it follows the camera to a new /dev/videoN after a replug),
+    //   or "auto": the first /dev/videoN (in numeric order) that is a streaming capture device
+    //   and delivers a frame within first_frame_timeout_ms;
+    // - min_width x min_height: the camera's smallest mode at least this (and `working`) large is
+    //   asked for;
+    // - lock_exposure: auto exposure, gain and white balance off where the camera has them; the
+    //   values before are put back on release(), since cameras keep controls after the program
+    //   exits.
+    config::CameraSettings settings;
     cv::Size working{160, 120};  // the core's working size: frames must be at least this big
-    // The smallest size worth capturing and decoding at ([camera] min_width/min_height): the
-    // camera's smallest mode at least this (and `working`) large is asked for. Measured on the
-    // rendered scenes (docs/performance.md): 320x240 tracks as 640x480 does; at 160x120 the
-    // Poisson-disk filter's radius shrinks with the input and realworld's depth r drops 0.88 ->
-    // 0.68.
-    cv::Size least{320, 240};
-    // Switch auto exposure, auto gain and auto white balance off, where the camera has them, so
-    // the camera does not change the image's brightness behind the tracker's back. The values
-    // before are put back on release(): cameras keep controls after the program exits.
-    bool lock_exposure = false;
     int first_frame_timeout_ms = 2000;
     // MJPEG modes: decode at the smallest n/8 scale still at least capture_least()
     // (jpeg_decoder.hpp) instead of at full size. realworld through a q80 JPEG at 640x480:
     // full decode 100% tracked, depth r 0.906; 1/2 scale 100%, 0.913; 1/4 (160x120) 100%, 0.758.
     bool scaled_mjpeg = true;
 
-    // Per axis the larger of `working` and `least`.
+    // Per axis the larger of `working` and the configured minimum.
     cv::Size capture_least() const noexcept {
-        return {std::max(working.width, least.width), std::max(working.height, least.height)};
+        return {std::max(working.width, settings.min_width),
+                std::max(working.height, settings.min_height)};
     }
 };
 

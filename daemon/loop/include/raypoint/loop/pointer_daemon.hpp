@@ -32,7 +32,7 @@ struct DaemonParts {
     std::unique_ptr<FrameSource> source;
     std::unique_ptr<EventSink> sink;
     std::unique_ptr<ControlServer> control;  // null: no control socket
-    bool stop_at_end_of_input = false;       // a recorded video: exit when it ends
+    bool exit_when_lost = false;             // a recorded video: exit when it fails, not reopen
     // --duration: stop after this long (measuring the daemon's cost over a fixed time).
     std::optional<std::chrono::milliseconds> duration;
     // SIGHUP: the new configuration, or throws config::ConfigError to keep the running one.
@@ -76,6 +76,7 @@ class PointerDaemon {
     int signal_fd_ = -1;
     bool paused_ = false;
     bool camera_lost_ = false;
+    bool input_ended_ = false;  // a recorded source's CaptureStatus::ended: the run is over
     std::string lost_reason_;
     RunStatistics::Clock::time_point next_reopen_{};
     RunStatistics::Clock::time_point stop_at_ = RunStatistics::Clock::time_point::max();

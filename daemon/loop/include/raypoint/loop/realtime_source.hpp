@@ -20,7 +20,7 @@ namespace raypoint::daemon {
 class RealtimeSource final : public FrameSource {
   public:
     // `loop`: start over after the last frame, for ever (the loop stops at --duration);
-    // otherwise report lost with "end of input" after it. `label` names the clip in description().
+    // otherwise report CaptureStatus::ended after it. `label` names the clip in description().
     // Throws std::runtime_error when the timerfd cannot be made, std::invalid_argument for an
     // empty clip.
     RealtimeSource(YuyvClip clip, std::string label, bool loop);
