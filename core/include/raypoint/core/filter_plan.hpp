@@ -60,7 +60,8 @@ class FilterPlan {
     bool uniform_parity() const noexcept { return uniform_parity_; }
     // Bit t set where taps()[t].odd_luma: the kernels' per-tap test, one word for all taps.
     std::uint32_t odd_taps() const noexcept { return odd_taps_; }
-    // Per working row, the lowest input row a tap reads (rows are fetched ahead up to it).
+    // Per working row, the last (largest) input row a tap reads: the filter fetches the rows
+    // of the next working row ahead up to it.
     int last_tap_row(int y) const noexcept { return last_tap_rows_[y]; }
 
   private:
