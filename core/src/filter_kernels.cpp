@@ -12,28 +12,6 @@
 #endif
 
 namespace raypoint::core {
-
-InstructionSet best_instruction_set() noexcept {
-#if defined(RAYPOINT_X86)
-    if (__builtin_cpu_supports("avx2")) return InstructionSet::avx2;
-    return InstructionSet::sse2;
-#else
-    return InstructionSet::scalar;
-#endif
-}
-
-std::string_view to_string(InstructionSet set) noexcept {
-    switch (set) {
-        case InstructionSet::scalar:
-            return "scalar";
-        case InstructionSet::sse2:
-            return "sse2";
-        case InstructionSet::avx2:
-            return "avx2";
-    }
-    return "?";
-}
-
 namespace detail {
 
 #if defined(RAYPOINT_X86)
@@ -130,7 +108,7 @@ int filter_yuyv_sse2(const FilterRow& row) noexcept {
                                                   load32(tap + centre[2]), load32(tap + centre[3]));
             const __m128i low = _mm_unpacklo_epi8(packed, zero);
             const __m128i high = _mm_unpackhi_epi8(packed, zero);
-            if (row.tap_odd[t] != 0) {
+            if (((row.odd_taps >> t) & 1U) != 0) {
                 odd_low = _mm_add_epi16(odd_low, low);
                 odd_high = _mm_add_epi16(odd_high, high);
             } else {
@@ -275,7 +253,7 @@ __attribute__((target("avx2"))) int filter_yuyv_avx2(const FilterRow& row) noexc
                 _mm256_i32gather_epi32(reinterpret_cast<const int*>(row.taps[t]), index, 1);
             const __m256i low = _mm256_unpacklo_epi8(packed, zero);
             const __m256i high = _mm256_unpackhi_epi8(packed, zero);
-            if (row.tap_odd[t] != 0) {
+            if (((row.odd_taps >> t) & 1U) != 0) {
                 odd_low = _mm256_add_epi16(odd_low, low);
                 odd_high = _mm256_add_epi16(odd_high, high);
             } else {

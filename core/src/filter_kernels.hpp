@@ -1,10 +1,10 @@
 #pragma once
-// Vector kernels of the Poisson-disk filter's interior (preprocess_filter.cpp), and the pixel
+// Vector kernels of the Poisson-disk filter's interior (filter_stage.cpp), and the pixel
 // arithmetic every path shares, so the scalar, SSE2 and AVX2 paths give identical images.
 
 #include <cstdint>
 
-#include "raypoint/core/preprocess.hpp"
+#include "raypoint/core/poisson_disk.hpp"
 
 namespace raypoint::core::detail {
 
@@ -52,11 +52,11 @@ struct FilterRow {
     // Per tap, its input row with the tap's column shift applied (BGR: dx * 3 bytes; YUYV with
     // centres of parity p: ((p + dx) & ~1) * 2 bytes, the start of the tap's Y0 U Y1 V group).
     const std::uint8_t* const* taps;
-    const int* centre_bytes;       // per working column, the byte offset of its centre (group)
-    const unsigned char* tap_odd;  // YUYV: 1 where the tap's Y is the second of its pair
-    int begin;                     // first working column to do
-    int end;                       // one past the last interior column
-    int width;                     // working width: stores may spill into columns still to come
+    const int* centre_bytes;  // per working column, the byte offset of its centre (group)
+    std::uint32_t odd_taps;   // YUYV: bit t set where tap t's Y is the second of its pair
+    int begin;                // first working column to do
+    int end;                  // one past the last interior column
+    int width;                // working width: stores may spill into columns still to come
     FilterOutput out;
 };
 

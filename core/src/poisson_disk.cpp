@@ -1,7 +1,10 @@
+// The Poisson-disk filter's tap offsets (paper 4.1).
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
-#include "raypoint/core/preprocess.hpp"
+#include "raypoint/core/poisson_disk.hpp"
 
 namespace raypoint::core {
 namespace {

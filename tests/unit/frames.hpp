@@ -22,7 +22,7 @@ inline core::PreprocessSettings identity_settings() {
     return settings;
 }
 
-inline cv::Mat uniform(cv::Size size, cv::Vec3b colour) {
+inline cv::Mat uniform(cv::Size size, const cv::Vec3b& colour) {
     return cv::Mat(size, CV_8UC3, colour);
 }
 

@@ -1,6 +1,8 @@
 // The Poisson-disk filter and subsampling of preprocessing (paper 4.1), for BGR and YUYV input,
 // with the grey image computed from the same sums.
 
+#include "raypoint/core/filter_stage.hpp"
+
 #include <algorithm>
 
 #if defined(__SSE2__)
@@ -8,22 +10,68 @@
 #endif
 
 #include "filter_kernels.hpp"
-#include "raypoint/core/preprocess.hpp"
 
 namespace raypoint::core {
+
+FilterStage::FilterStage(const PreprocessSettings& settings, InstructionSet instructions)
+    : instructions_(instructions),
+      plan_(cv::Size(settings.work_width, settings.work_height), settings.filter_radius) {
+    const cv::Size size = plan_.working();
+    for (int i = 0; i < 2; ++i) {
+        color_[i].create(size, CV_8UC3);
+        color_[i].setTo(cv::Scalar::all(0));
+        gray_[i].create(size, CV_8U);
+        gray_[i].setTo(cv::Scalar::all(0));
+    }
+    planes_.create(size.height * 3, size.width, CV_8U);
+}
+
+bool FilterStage::apply(const FrameView& frame) noexcept {
+    const cv::Size working = plan_.working();
+    const int bytes_per_pixel = frame.format == PixelFormat::bgr ? 3 : 2;
+    if (frame.data == nullptr || frame.width < working.width || frame.height < working.height ||
+        frame.stride < frame.width * bytes_per_pixel ||
+        (frame.format == PixelFormat::yuyv && frame.width % 2 != 0)) {
+        return false;
+    }
+    if (!plan_.matches(frame)) {
+        filtered_ = 0;  // a new geometry has no comparable previous frame
+        try {
+            plan_.build(frame.width, frame.height, frame.format);
+        } catch (...) {  // out of memory while setting up a new geometry: skip the frame
+            return false;
+        }
+    }
+    current_ = 1 - current_;
+    switch (frame.format) {
+        case PixelFormat::bgr:
+            filter_bgr(frame);
+            break;
+        case PixelFormat::yuyv:
+            filter_yuyv(frame);
+            break;
+    }
+    ++filtered_;
+    return true;
+}
 
 // The filter is evaluated only at the working pixels' centres: filtering the whole frame and
 // then subsampling gives the same values at 16x the cost for 640x480. Working pixel outside,
 // taps inside, so the sums stay in registers; the interior skips the clamped column tables
 // and runs in the vector kernels of filter_kernels.cpp.
-void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
-    for (int y = 0; y < settings_.work_height; ++y) {
+void FilterStage::filter_bgr(const FrameView& frame) noexcept {
+    const auto& taps = plan_.taps();
+    const int* const centre_bytes = plan_.centre_bytes().data();
+    const int width = plan_.working().width;
+    const int interior_begin = plan_.interior_begin();
+    const int interior_end = plan_.interior_end();
+    for (int y = 0; y < plan_.working().height; ++y) {
         start_row(frame, y);
         const detail::FilterOutput target = output_row(y);
         const auto clamped = [&](int x) {
             unsigned b = 0, g = 0, r = 0;
             for (int t = 0; t < poisson_disk_tap_count; ++t) {
-                const std::uint8_t* pixel = tap_row_pointers_[t] + tap_columns_[t][x] * 3;
+                const std::uint8_t* pixel = tap_row_pointers_[t] + taps[t].columns[x] * 3;
                 b += pixel[0];
                 g += pixel[1];
                 r += pixel[2];
@@ -31,14 +79,14 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
             detail::store_bgr(target, x, b, g, r);
         };
         int x = 0;
-        for (; x < interior_begin_; ++x)
+        for (; x < interior_begin; ++x)
             clamped(x);
         shift_taps(1);
         x = filter_interior(x, target);
-        for (; x < interior_end_; ++x) {
+        for (; x < interior_end; ++x) {
             unsigned b = 0, g = 0, r = 0;
             for (int t = 0; t < poisson_disk_tap_count; ++t) {
-                const std::uint8_t* pixel = tap_row_pointers_[t] + centre_bytes_[x];
+                const std::uint8_t* pixel = tap_row_pointers_[t] + centre_bytes[x];
                 b += pixel[0];
                 g += pixel[1];
                 r += pixel[2];
@@ -46,14 +94,13 @@ void Preprocessor::filter_bgr(const FrameView& frame) noexcept {
             detail::store_bgr(target, x, b, g, r);
         }
         shift_taps(-1);
-        for (x = std::max(interior_end_, interior_begin_); x < settings_.work_width; ++x) {
+        for (x = std::max(interior_end, interior_begin); x < width; ++x)
             clamped(x);
-        }
     }
 }
 
-detail::FilterOutput Preprocessor::output_row(int y) noexcept {
-    const int height = settings_.work_height;
+detail::FilterOutput FilterStage::output_row(int y) noexcept {
+    const int height = plan_.working().height;
     return {color_[current_].ptr<std::uint8_t>(y), gray_[current_].ptr<std::uint8_t>(y),
             planes_.ptr<std::uint8_t>(y), planes_.ptr<std::uint8_t>(height + y),
             planes_.ptr<std::uint8_t>(2 * height + y)};
@@ -61,15 +108,15 @@ detail::FilterOutput Preprocessor::output_row(int y) noexcept {
 
 // The vector kernels over the interior from working column `begin` (the taps shifted);
 // returns the first column they left for the plain loops.
-int Preprocessor::filter_interior(int begin, const detail::FilterOutput& target) const noexcept {
+int FilterStage::filter_interior(int begin, const detail::FilterOutput& target) const noexcept {
     const detail::FilterRow row{tap_row_pointers_.data(),
-                                centre_bytes_.data(),
-                                tap_odd_.data(),
+                                plan_.centre_bytes().data(),
+                                plan_.odd_taps(),
                                 begin,
-                                interior_end_,
-                                settings_.work_width,
+                                plan_.interior_end(),
+                                plan_.working().width,
                                 target};
-    const bool bgr = input_format_ == PixelFormat::bgr;
+    const bool bgr = plan_.format() == PixelFormat::bgr;
     switch (instructions_) {
         case InstructionSet::avx2:
             return bgr ? detail::filter_bgr_avx2(row) : detail::filter_yuyv_avx2(row);
@@ -82,28 +129,30 @@ int Preprocessor::filter_interior(int begin, const detail::FilterOutput& target)
 }
 
 // Moves every tap's row pointer by its column shift (sign 1) or back (-1): the interior
-// addresses a tap as row pointer + centre_bytes_[x].
-void Preprocessor::shift_taps(int sign) noexcept {
+// addresses a tap as row pointer + centre_bytes()[x].
+void FilterStage::shift_taps(int sign) noexcept {
+    const auto& taps = plan_.taps();
     for (std::size_t t = 0; t < tap_row_pointers_.size(); ++t)
-        tap_row_pointers_[t] += sign * tap_shift_bytes_[t];
+        tap_row_pointers_[t] += sign * taps[t].shift_bytes;
 }
 
 // Points each tap at its input row for working row y, and fetches the rows of the next.
-void Preprocessor::start_row(const FrameView& frame, int y) noexcept {
+void FilterStage::start_row(const FrameView& frame, int y) noexcept {
+    const auto& taps = plan_.taps();
     for (std::size_t t = 0; t < tap_row_pointers_.size(); ++t) {
         tap_row_pointers_[t] =
-            frame.data + static_cast<std::ptrdiff_t>(tap_rows_[t][y]) * frame.stride;
+            frame.data + static_cast<std::ptrdiff_t>(taps[t].rows[y]) * frame.stride;
     }
     prefetch_rows(frame, y + 1);
 }
 
 // A camera frame arrives cold in memory; the taps read 16 rows at a time, too many streams
 // for the hardware prefetcher, so the rows the next working row adds are fetched ahead.
-void Preprocessor::prefetch_rows(const FrameView& frame, int next_y) const noexcept {
+void FilterStage::prefetch_rows(const FrameView& frame, int next_y) const noexcept {
 #if defined(__SSE2__)
-    if (next_y >= settings_.work_height) return;
-    const int first = last_tap_row_[next_y - 1] + 1;
-    const int last = last_tap_row_[next_y];
+    if (next_y >= plan_.working().height) return;
+    const int first = plan_.last_tap_row(next_y - 1) + 1;
+    const int last = plan_.last_tap_row(next_y);
     const int bytes = frame.width * (frame.format == PixelFormat::bgr ? 3 : 2);
     for (int row = first; row <= last; ++row) {
         const std::uint8_t* start = frame.data + static_cast<std::ptrdiff_t>(row) * frame.stride;
@@ -120,14 +169,16 @@ void Preprocessor::prefetch_rows(const FrameView& frame, int next_y) const noexc
 // YUYV: Y from the pixel itself, U and V from its pair; averaged as YUV, then converted to BGR
 // (detail::store_yuv). The vector kernels need every interior centre of one parity (integer
 // scales: 320, 640, 1280, 1920 wide to 160), so a tap's Y is at the same place of its pair.
-void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
-    for (int y = 0; y < settings_.work_height; ++y) {
+void FilterStage::filter_yuyv(const FrameView& frame) noexcept {
+    const auto& taps = plan_.taps();
+    const int width = plan_.working().width;
+    for (int y = 0; y < plan_.working().height; ++y) {
         start_row(frame, y);
         const detail::FilterOutput target = output_row(y);
         const auto clamped = [&](int x) {
             unsigned sum_y = 0, sum_u = 0, sum_v = 0;
             for (int t = 0; t < poisson_disk_tap_count; ++t) {
-                const int column = tap_columns_[t][x];
+                const int column = taps[t].columns[x];
                 const std::uint8_t* pair = tap_row_pointers_[t] + (column & ~1) * 2;
                 sum_y += pair[(column & 1) * 2];
                 sum_u += pair[1];
@@ -136,14 +187,14 @@ void Preprocessor::filter_yuyv(const FrameView& frame) noexcept {
             detail::store_yuv(target, x, sum_y, sum_u, sum_v);
         };
         int x = 0;
-        if (uniform_parity_) {
-            for (; x < interior_begin_; ++x)
+        if (plan_.uniform_parity()) {
+            for (; x < plan_.interior_begin(); ++x)
                 clamped(x);
             shift_taps(1);
             x = filter_interior(x, target);
             shift_taps(-1);
         }
-        for (; x < settings_.work_width; ++x)
+        for (; x < width; ++x)
             clamped(x);
     }
 }

@@ -1,9 +1,9 @@
 // The Sobel edge image of preprocessing (paper 4.1).
 
+#include "raypoint/core/edge_stage.hpp"
+
 #include <algorithm>
 #include <cmath>
-
-#include "raypoint/core/preprocess.hpp"
 
 namespace raypoint::core {
 namespace {
@@ -91,38 +91,50 @@ EdgeKernels edge_kernels(InstructionSet instructions) noexcept {
 
 }  // namespace
 
+EdgeStage::EdgeStage(const PreprocessSettings& settings, InstructionSet instructions)
+    : source_(settings.edge_source),
+      threshold_(settings.edge_threshold),
+      instructions_(instructions),
+      squared_channels_(static_cast<std::size_t>(settings.work_width) * 3) {
+    const cv::Size size(settings.work_width, settings.work_height);
+    magnitude_.create(size, CV_8U);
+    edges_.create(size, CV_8U);
+    magnitude_.setTo(cv::Scalar::all(0));
+    edges_.setTo(cv::Scalar::all(0));
+}
+
 // Sobel 3x3 on each plane, replicated border; the magnitude is the L2 norm, saturated to 8
 // bits as in a grey edge image. EdgeSource::luma uses the grey image's gradient (paper 4.1);
 // max_channel the strongest channel's, which keeps a skin hand's outline over a background of
 // equal brightness. Written out rather than cv::Sobel, which allocates its filter every call.
 // Planes (the filter writes B, G and R apart) keep every loop contiguous.
-void Preprocessor::compute_edges() noexcept {
+void EdgeStage::compute(const cv::Mat& grey, const cv::Mat& planes) noexcept {
     const int width = magnitude_.cols;
     const int height = magnitude_.rows;
-    int planes = 1;
-    const cv::Mat* source = &gray_[current_];
-    switch (settings_.edge_source) {
+    int plane_count = 1;
+    const cv::Mat* source = &grey;
+    switch (source_) {
         case EdgeSource::luma:
             break;
         case EdgeSource::max_channel:
-            planes = 3;
-            source = &planes_;
+            plane_count = 3;
+            source = &planes;
             break;
     }
     const EdgeKernels kernels = edge_kernels(instructions_);
     int* const squared = squared_channels_.data();
     for (int y = 0; y < height; ++y) {
-        for (int c = 0; c < planes; ++c) {
+        for (int c = 0; c < plane_count; ++c) {
             const int first_row = c * height;
             kernels.gradients(source->ptr<std::uint8_t>(first_row + std::max(y - 1, 0)),
                               source->ptr<std::uint8_t>(first_row + y),
                               source->ptr<std::uint8_t>(first_row + std::min(y + 1, height - 1)),
                               squared + c * width, width);
         }
-        const int* last = squared + (planes - 1) * width;
-        kernels.magnitudes(squared, planes == 3 ? squared + width : squared, last,
+        const int* last = squared + (plane_count - 1) * width;
+        kernels.magnitudes(squared, plane_count == 3 ? squared + width : squared, last,
                            magnitude_.ptr<std::uint8_t>(y), edges_.ptr<std::uint8_t>(y), width,
-                           settings_.edge_threshold);
+                           threshold_);
     }
 }
 

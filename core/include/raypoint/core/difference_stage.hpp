@@ -1,0 +1,53 @@
+#pragma once
+// The third stage of frame preprocessing (paper 4.1): the absolute difference of two working
+// images, its brightness compensation (the largest of the 10 smallest distinct values is
+// subtracted) and the global inter-frame movement value.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "raypoint/core/settings.hpp"
+
+namespace raypoint::core {
+
+// The brightness compensation of paper 4.1: the largest of the `minima` smallest distinct values
+// present in `difference` (0 when there are fewer distinct values than that is impossible: then
+// the largest present value). Histogram based, so O(pixels) and no sorting.
+int brightness_offset(const cv::Mat& difference, int minima) noexcept;
+
+class DifferenceStage {
+  public:
+    explicit DifferenceStage(const PreprocessSettings& settings);
+
+    // The compensated difference of `grey` and `previous_grey` (CV_8U, the working size) and
+    // the movement value; `color` and `previous_color` (CV_8UC3, the working size) are read
+    // only when the movement comes from the channels (PreprocessSettings::movement_source
+    // EdgeSource::max_channel).
+    void compute(const cv::Mat& grey, const cv::Mat& previous_grey, const cv::Mat& color,
+                 const cv::Mat& previous_color) noexcept;
+    // No previous frame: an empty difference, no movement, no offset.
+    void reset() noexcept;
+
+    const cv::Mat& difference() const noexcept { return difference_; }  // CV_8U compensated
+    // Sum of the compensated difference over the working pixels (paper 4.1 "global inter-frame
+    // movement value"; the paper's average times the pixel count, see docs/settings.md), from
+    // the grey difference or the per-channel one (PreprocessSettings::movement_source).
+    double movement() const noexcept { return movement_; }
+    int brightness_offset_applied() const noexcept { return offset_; }
+
+  private:
+    bool channels_;  // the movement value from the largest per-channel difference
+    int minima_;
+    cv::Mat difference_;
+    std::vector<std::uint8_t> channel_row_;  // a row of channel differences, then their maxima
+    // Histograms of the grey and the per-channel difference, four interleaved partial ones each.
+    std::array<std::array<int, 256>, 4> grey_bins_{};
+    std::array<std::array<int, 256>, 4> channel_bins_{};
+    double movement_ = 0.0;
+    int offset_ = 0;
+};
+
+}  // namespace raypoint::core

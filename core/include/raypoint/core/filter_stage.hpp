@@ -1,0 +1,66 @@
+#pragma once
+// The first stage of frame preprocessing (paper 4.1): the Poisson-disk filter and subsampling
+// of a camera frame to the working colour, grey and channel images, the current and the
+// previous frame's.
+
+#include <array>
+#include <cstdint>
+
+#include <opencv2/core.hpp>
+
+#include "raypoint/core/filter_plan.hpp"
+#include "raypoint/core/frame.hpp"
+#include "raypoint/core/instruction_set.hpp"
+#include "raypoint/core/poisson_disk.hpp"
+#include "raypoint/core/settings.hpp"
+
+namespace raypoint::core {
+namespace detail {
+struct FilterOutput;
+}
+
+class FilterStage {
+  public:
+    explicit FilterStage(const PreprocessSettings& settings,
+                         InstructionSet instructions = best_instruction_set());
+
+    // Filters and subsamples `frame` into the current images; the ones it replaces become the
+    // previous. Returns false for a frame the core cannot read (null data, odd YUYV width,
+    // stride too small, smaller than the working size): the frame is skipped, nothing changes.
+    // A new input size or format rebuilds the plan (the only allocation) and forgets the
+    // previous frame.
+    bool apply(const FrameView& frame) noexcept;
+
+    const cv::Mat& color() const noexcept { return color_[current_]; }  // CV_8UC3
+    const cv::Mat& previous_color() const noexcept { return color_[1 - current_]; }
+    const cv::Mat& gray() const noexcept { return gray_[current_]; }  // CV_8U
+    const cv::Mat& previous_gray() const noexcept { return gray_[1 - current_]; }
+    // CV_8U, three working heights: the current colour image's B, G and R planes, one above
+    // the other (the Sobel loops read them contiguously).
+    const cv::Mat& planes() const noexcept { return planes_; }
+    // Two frames of the same geometry in a row: the previous images are comparable.
+    bool has_previous() const noexcept { return filtered_ >= 2; }
+    const FilterPlan& plan() const noexcept { return plan_; }
+
+  private:
+    void filter_bgr(const FrameView& frame) noexcept;
+    void filter_yuyv(const FrameView& frame) noexcept;
+    void start_row(const FrameView& frame, int y) noexcept;
+    void shift_taps(int sign) noexcept;
+    detail::FilterOutput output_row(int y) noexcept;
+    int filter_interior(int begin, const detail::FilterOutput& target) const noexcept;
+    void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
+
+    InstructionSet instructions_;
+    FilterPlan plan_;
+    // Per tap, the input row it reads for the working row being filtered (plus its byte
+    // shift while the interior kernels run).
+    std::array<const std::uint8_t*, poisson_disk_tap_count> tap_row_pointers_{};
+    std::array<cv::Mat, 2> color_;
+    std::array<cv::Mat, 2> gray_;
+    cv::Mat planes_;
+    int current_ = 0;
+    long filtered_ = 0;  // frames filtered since the input geometry last changed
+};
+
+}  // namespace raypoint::core

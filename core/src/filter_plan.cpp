@@ -1,0 +1,92 @@
+// The Poisson-disk filter's plan (paper 4.1): tap positions per working pixel, clamped to the
+// frame, and the interior where the vector kernels need no clamping.
+
+#include "raypoint/core/filter_plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace raypoint::core {
+namespace {
+
+// The radius setting is in pixels of a 640-wide frame (see settings.hpp).
+constexpr double reference_width = 640.0;
+
+// Working pixel i of n covers input pixels [i*N/n, (i+1)*N/n); its centre, rounded.
+int working_to_input(int index, int working_size, int input_size) noexcept {
+    const double centre = (index + 0.5) * input_size / working_size - 0.5;
+    return static_cast<int>(std::lround(centre));
+}
+
+}  // namespace
+
+FilterPlan::FilterPlan(cv::Size working, double filter_radius)
+    : working_(working), filter_radius_(filter_radius) {}
+
+void FilterPlan::build(int input_width, int input_height, PixelFormat format) {
+    input_width_ = 0;  // matches no frame until the plan is complete
+    const auto& offsets = poisson_disk_taps();
+    const int width = working_.width;
+    const int height = working_.height;
+    const double radius = filter_radius_ * input_width / reference_width;
+    centre_columns_.resize(static_cast<std::size_t>(width));
+    int reach = 0;
+    for (std::size_t t = 0; t < taps_.size(); ++t) {
+        FilterTap& tap = taps_[t];
+        tap.dx = static_cast<int>(std::lround(offsets[t].x * radius));
+        const int dy = static_cast<int>(std::lround(offsets[t].y * radius));
+        reach = std::max(reach, std::abs(tap.dx));
+        tap.columns.resize(static_cast<std::size_t>(width));
+        tap.rows.resize(static_cast<std::size_t>(height));
+        for (int x = 0; x < width; ++x) {
+            const int column = working_to_input(x, width, input_width) + tap.dx;
+            tap.columns[x] = std::clamp(column, 0, input_width - 1);
+        }
+        for (int y = 0; y < height; ++y) {
+            const int row = working_to_input(y, height, input_height) + dy;
+            tap.rows[y] = std::clamp(row, 0, input_height - 1);
+        }
+    }
+    last_tap_rows_.assign(static_cast<std::size_t>(height), 0);
+    for (int y = 0; y < height; ++y) {
+        for (const FilterTap& tap : taps_)
+            last_tap_rows_[y] = std::max(last_tap_rows_[y], tap.rows[y]);
+    }
+    interior_begin_ = width;
+    interior_end_ = 0;
+    for (int x = 0; x < width; ++x) {
+        const int centre = working_to_input(x, width, input_width);
+        centre_columns_[x] = centre;
+        // YUYV reads the pair of a column, one past it at most.
+        if (centre - reach - 1 >= 0 && centre + reach + 1 < input_width) {
+            interior_begin_ = std::min(interior_begin_, x);
+            interior_end_ = std::max(interior_end_, x + 1);
+        }
+    }
+    if (interior_begin_ >= interior_end_) interior_begin_ = interior_end_ = 0;
+    // YUYV: with every interior centre of one parity p (even for 640, 1280, 1920 wide; odd
+    // for 320), column c + dx of centre c is in the pair starting at (c - p) + ((p + dx) & ~1)
+    // and its Y is the pair's second when p + dx is odd, the same for every centre.
+    const int parity = interior_begin_ < interior_end_ ? centre_columns_[interior_begin_] & 1 : 0;
+    uniform_parity_ = true;
+    for (int x = interior_begin_; x < interior_end_; ++x) {
+        if ((centre_columns_[x] & 1) != parity) uniform_parity_ = false;
+    }
+    const bool bgr = format == PixelFormat::bgr;
+    odd_taps_ = 0;
+    for (std::size_t t = 0; t < taps_.size(); ++t) {
+        FilterTap& tap = taps_[t];
+        tap.odd_luma = ((parity + tap.dx) & 1) != 0;
+        tap.shift_bytes = bgr ? tap.dx * 3 : ((parity + tap.dx) & ~1) * 2;
+        if (tap.odd_luma) odd_taps_ |= 1U << t;
+    }
+    centre_bytes_.resize(static_cast<std::size_t>(width));
+    for (int x = 0; x < width; ++x)
+        centre_bytes_[x] = bgr ? centre_columns_[x] * 3 : (centre_columns_[x] & ~1) * 2;
+    input_width_ = input_width;
+    input_height_ = input_height;
+    format_ = format;
+}
+
+}  // namespace raypoint::core
