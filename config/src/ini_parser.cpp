@@ -231,12 +231,13 @@ class Parser {
             return;
         }
         // Whether a value is valid does not depend on the others, so it is checked here, where
-        // its error comes out in line order with the rest.
-        if (const auto reason = key->parse(scratch_, value_text)) {
+        // its error comes out in line order with the rest, and the value read is kept.
+        Value value;
+        if (const auto reason = key->parse(value_text, value)) {
             add_error(where + *reason + " (allowed: " + key->allowed() + ")");
             return;
         }
-        file_.settings.push_back(IniSetting{key, value_text, line_});
+        file_.settings.push_back(IniSetting{key, std::move(value), line_});
     }
 
     std::string_view rest_;
@@ -249,7 +250,6 @@ class Parser {
     bool handled_ = false;   // and inih called the handler for it
     std::string key_text_;
     std::map<std::string, int> first_line_;  // "section.key" -> line
-    Config scratch_;                         // where values are tried
 };
 
 }  // namespace

@@ -59,6 +59,13 @@ std::string Key::allowed() const {
     return {};
 }
 
+std::optional<std::string> Key::set(Config& config, std::string_view text) const {
+    Value value;
+    if (auto reason = parse(text, value)) return reason;
+    assign(config, value);
+    return std::nullopt;
+}
+
 const Key* find_key(std::string_view section, std::string_view name) noexcept {
     for (const auto& key : schema()) {
         if (key.section == section && key.name == name) return &key;
@@ -130,7 +137,7 @@ void apply_assignment(Config& config, std::string_view assignment) {
         throw ConfigError("--set " + shown + ": unknown key (did you mean " +
                           nearest_key(assignment.substr(0, equals)) + "?)");
     }
-    if (const auto reason = key->parse(config, value)) {
+    if (const auto reason = key->set(config, value)) {
         throw ConfigError("--set " + shown + ": " + *reason + " (allowed: " + key->allowed() + ")");
     }
 }
