@@ -159,9 +159,23 @@ std::vector<std::string> cross_check(const Config& config) {
         std::min(preprocess.work_width, preprocess.work_height)) {
         problems.push_back("estimator.block_size must fit in the working image");
     }
-    if (const auto problem = core::pointer_settings_problem(config.core.pointer);
-        !problem.empty()) {
-        problems.emplace_back(problem);
+    // Broken pointer settings never make the pointer divide by zero (an empty active region maps
+    // the whole frame), but clicks would do what the values say.
+    const auto& motion = config.core.pointer.motion;
+    if (!(motion.active_left < motion.active_right)) {
+        problems.push_back("pointer.active_left must be below pointer.active_right");
+    }
+    if (!(motion.active_top < motion.active_bottom)) {
+        problems.push_back("pointer.active_top must be below pointer.active_bottom");
+    }
+    const auto& click = config.core.pointer.click;
+    if (!(click.release_rise < click.press_rise)) {
+        problems.push_back(
+            "click.release_rise must be below click.press_rise, or a press releases at once");
+    }
+    if (!(click.start_rise < click.press_rise)) {
+        problems.push_back(
+            "click.start_rise must be below click.press_rise: a push begins before it presses");
     }
     return problems;
 }

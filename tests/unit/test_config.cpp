@@ -261,6 +261,29 @@ TEST(CrossCheck, EachRuleHasItsMessage) {
     EXPECT_EQ(cross_check(config).size(), 2U);
 }
 
+TEST(CrossCheck, PointerRulesHaveTheirMessages) {
+    using Problems = std::vector<std::string>;
+    Config config;
+    config.core.pointer.motion.active_left = 0.9;
+    config.core.pointer.motion.active_right = 0.1;
+    EXPECT_EQ(cross_check(config),
+              Problems{"pointer.active_left must be below pointer.active_right"});
+    config = Config{};
+    config.core.pointer.motion.active_bottom = config.core.pointer.motion.active_top;
+    EXPECT_EQ(cross_check(config),
+              Problems{"pointer.active_top must be below pointer.active_bottom"});
+    config = Config{};
+    config.core.pointer.click.release_rise = config.core.pointer.click.press_rise;
+    EXPECT_EQ(cross_check(config), Problems{"click.release_rise must be below click.press_rise, "
+                                            "or a press releases at once"});
+    config = Config{};
+    config.core.pointer.click.start_rise = 0.3;
+    EXPECT_EQ(cross_check(config), Problems{"click.start_rise must be below click.press_rise: a "
+                                            "push begins before it presses"});
+    config.core.pointer.motion.active_left = 1.0;  // every broken rule is reported
+    EXPECT_EQ(cross_check(config).size(), 2U);
+}
+
 TEST(Ini, RoundTripsLineByLineThroughApplyAssignment) {
     Config source;
     for (const Key& key : schema()) {
