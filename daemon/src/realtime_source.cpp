@@ -38,7 +38,7 @@ RealtimeSource::~RealtimeSource() {
 }
 
 core::Timestamp RealtimeSource::due(std::int64_t serial) const noexcept {
-    return start_ + std::llround(static_cast<double>(serial) * 1e6 / clip_.fps());
+    return start_ + core::seconds_to_us(static_cast<double>(serial) / clip_.fps());
 }
 
 void RealtimeSource::arm(core::Timestamp when) noexcept {

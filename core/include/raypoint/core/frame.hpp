@@ -6,11 +6,16 @@
 namespace raypoint::core {
 
 // Microseconds on a monotonic clock. Only differences matter: the core never reads a clock,
-// so a recorded clip replays exactly as it ran live (DEVELOPERS.md rule 2).
+// so a recorded clip replays exactly as it ran live.
 using Timestamp = std::int64_t;
 
+// Every conversion from seconds to Timestamp goes through these, so all round the same way.
 constexpr Timestamp seconds_to_us(double seconds) noexcept {
     return static_cast<Timestamp>(seconds * 1e6);
+}
+// Whole seconds (a timespec's or timeval's tv_sec), exactly.
+constexpr Timestamp seconds_to_us(std::int64_t seconds) noexcept {
+    return seconds * 1'000'000;
 }
 
 enum class PixelFormat {
