@@ -35,9 +35,14 @@ std::string_view trim(std::string_view text) {
     return text;
 }
 
+// Built by appending: on `"\"" + std::string(...)` GCC 12 at -O2 and above gives a false
+// -Wrestrict warning.
 std::string shown(std::string_view text) {
-    if (text.size() > shown_chars) return "\"" + std::string(text.substr(0, shown_chars)) + "...\"";
-    return "\"" + std::string(text) + "\"";
+    std::string quoted(1, '"');
+    quoted.append(text.substr(0, shown_chars));
+    if (text.size() > shown_chars) quoted.append("...");
+    quoted.push_back('"');
+    return quoted;
 }
 
 // A comment after a value starts at ';' or '#' after whitespace ("rays = 8  # eight"). inih alone
@@ -79,7 +84,9 @@ std::string suggestion(std::string_view section, std::string_view name) {
         consider(key.section, key.name);
     consider(general_section, preset_key);
     if (best_section == section) return std::string(best_name);
-    return "[" + std::string(best_section) + "] " + std::string(best_name);
+    std::string named(1, '[');  // appended: see shown()
+    named.append(best_section).append("] ").append(best_name);
+    return named;
 }
 
 class Parser {
@@ -231,12 +238,13 @@ class Parser {
             return;
         }
         // Whether a value is valid does not depend on the others, so it is checked here, where
-        // its error comes out in line order with the rest.
-        if (const auto reason = key->parse(scratch_, value_text)) {
+        // its error comes out in line order with the rest, and the value read is kept.
+        Value value;
+        if (const auto reason = key->parse(value_text, value)) {
             add_error(where + *reason + " (allowed: " + key->allowed() + ")");
             return;
         }
-        file_.settings.push_back(IniSetting{key, value_text, line_});
+        file_.settings.push_back(IniSetting{key, std::move(value), line_});
     }
 
     std::string_view rest_;
@@ -249,7 +257,6 @@ class Parser {
     bool handled_ = false;   // and inih called the handler for it
     std::string key_text_;
     std::map<std::string, int> first_line_;  // "section.key" -> line
-    Config scratch_;                         // where values are tried
 };
 
 }  // namespace

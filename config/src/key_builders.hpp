@@ -14,60 +14,69 @@ namespace raypoint::config::detail {
 std::string format_real(double value);
 std::optional<double> parse_number(std::string_view text);
 
+// A row without its format, parse and assign, which each builder adds.
+inline Key row(std::string_view section, std::string_view name, ValueType type,
+               std::string_view doc, double min = 0.0, double max = 0.0) {
+    Key key;
+    key.section = section;
+    key.name = name;
+    key.type = type;
+    key.min = min;
+    key.max = max;
+    key.doc = doc;
+    return key;
+}
+
 template <typename Access>
 Key integer_key(std::string_view section, std::string_view name, int min, int max,
                 std::string_view doc, Access access) {
-    Key key{section,
-            name,
-            ValueType::integer,
-            static_cast<double>(min),
-            static_cast<double>(max),
-            {},
-            doc,
-            nullptr,
-            nullptr};
+    Key key = row(section, name, ValueType::integer, doc, min, max);
     key.format = [access](const Config& c) { return std::to_string(access(c)); };
-    key.parse = [access, min, max](Config& c, std::string_view text) -> std::optional<std::string> {
+    key.parse = [min, max](std::string_view text, Value& parsed) -> std::optional<std::string> {
         int value = 0;
         const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
         if (error != std::errc() || end != text.data() + text.size()) return "not an integer";
         if (value < min || value > max) return "value out of range";
-        access(c) = value;
+        parsed = value;
         return std::nullopt;
     };
+    key.assign = [access](Config& c, const Value& value) { access(c) = std::get<int>(value); };
     return key;
 }
 
 template <typename Access>
 Key real_key(std::string_view section, std::string_view name, double min, double max,
              std::string_view doc, Access access) {
-    Key key{section, name, ValueType::real, min, max, {}, doc, nullptr, nullptr};
+    Key key = row(section, name, ValueType::real, doc, min, max);
     key.format = [access](const Config& c) { return format_real(access(c)); };
-    key.parse = [access, min, max](Config& c, std::string_view text) -> std::optional<std::string> {
+    key.parse = [min, max](std::string_view text, Value& parsed) -> std::optional<std::string> {
         const auto value = parse_number(text);
         if (!value) return "not a number";
         if (*value < min || *value > max) return "value out of range";
-        access(c) = *value;
+        parsed = *value;
         return std::nullopt;
     };
+    key.assign = [access](Config& c, const Value& value) { access(c) = std::get<double>(value); };
     return key;
 }
 
 template <typename Access>
 Key boolean_key(std::string_view section, std::string_view name, std::string_view doc,
                 Access access) {
-    Key key{section, name, ValueType::boolean, 0, 1, {"true", "false"}, doc, nullptr, nullptr};
+    Key key = row(section, name, ValueType::boolean, doc, 0, 1);
+    key.choices = {"true", "false"};
     key.format = [access](const Config& c) { return std::string(access(c) ? "true" : "false"); };
-    key.parse = [access](Config& c, std::string_view text) -> std::optional<std::string> {
+    key.parse = [](std::string_view text, Value& parsed) -> std::optional<std::string> {
         if (text == "true" || text == "yes" || text == "on" || text == "1") {
-            access(c) = true;
+            parsed = true;
         } else if (text == "false" || text == "no" || text == "off" || text == "0") {
-            access(c) = false;
+            parsed = false;
         } else {
             return "not a boolean";
         }
         return std::nullopt;
     };
+    key.assign = [access](Config& c, const Value& value) { access(c) = std::get<bool>(value); };
     return key;
 }
 
@@ -75,14 +84,17 @@ Key boolean_key(std::string_view section, std::string_view name, std::string_vie
 template <typename Access>
 Key device_key(std::string_view section, std::string_view name, std::string_view doc,
                Access access) {
-    Key key{section, name, ValueType::device, 0, 0, {}, doc, nullptr, nullptr};
+    Key key = row(section, name, ValueType::device, doc);
     key.format = [access](const Config& c) { return access(c); };
-    key.parse = [access](Config& c, std::string_view text) -> std::optional<std::string> {
+    key.parse = [](std::string_view text, Value& parsed) -> std::optional<std::string> {
         const bool path = text.size() > 5 && text.substr(0, 5) == "/dev/" &&
                           text.find_first_of(" \t") == std::string_view::npos;
         if (text != "auto" && !path) return "not a device";
-        access(c) = std::string(text);
+        parsed = std::string(text);
         return std::nullopt;
+    };
+    key.assign = [access](Config& c, const Value& value) {
+        access(c) = std::get<std::string>(value);
     };
     return key;
 }
@@ -91,7 +103,7 @@ Key device_key(std::string_view section, std::string_view name, std::string_view
 template <typename Enum, typename Access>
 Key choice_key(std::string_view section, std::string_view name, std::string_view doc,
                std::vector<std::pair<Enum, std::string_view>> names, Access access) {
-    Key key{section, name, ValueType::choice, 0, 0, {}, doc, nullptr, nullptr};
+    Key key = row(section, name, ValueType::choice, doc);
     for (const auto& entry : names)
         key.choices.push_back(entry.second);
     key.format = [access, names](const Config& c) {
@@ -100,14 +112,17 @@ Key choice_key(std::string_view section, std::string_view name, std::string_view
         }
         return std::string("?");
     };
-    key.parse = [access, names](Config& c, std::string_view text) -> std::optional<std::string> {
-        for (const auto& [value, known] : names) {
-            if (known == text) {
-                access(c) = value;
+    key.parse = [names](std::string_view text, Value& parsed) -> std::optional<std::string> {
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            if (names[i].second == text) {
+                parsed = ChoiceIndex{i};
                 return std::nullopt;
             }
         }
         return "unknown value";
+    };
+    key.assign = [access, names](Config& c, const Value& value) {
+        access(c) = names[std::get<ChoiceIndex>(value).index].first;
     };
     return key;
 }

@@ -59,6 +59,13 @@ std::string Key::allowed() const {
     return {};
 }
 
+std::optional<std::string> Key::set(Config& config, std::string_view text) const {
+    Value value;
+    if (auto reason = parse(text, value)) return reason;
+    assign(config, value);
+    return std::nullopt;
+}
+
 const Key* find_key(std::string_view section, std::string_view name) noexcept {
     for (const auto& key : schema()) {
         if (key.section == section && key.name == name) return &key;
@@ -130,7 +137,7 @@ void apply_assignment(Config& config, std::string_view assignment) {
         throw ConfigError("--set " + shown + ": unknown key (did you mean " +
                           nearest_key(assignment.substr(0, equals)) + "?)");
     }
-    if (const auto reason = key->parse(config, value)) {
+    if (const auto reason = key->set(config, value)) {
         throw ConfigError("--set " + shown + ": " + *reason + " (allowed: " + key->allowed() + ")");
     }
 }
@@ -152,9 +159,23 @@ std::vector<std::string> cross_check(const Config& config) {
         std::min(preprocess.work_width, preprocess.work_height)) {
         problems.push_back("estimator.block_size must fit in the working image");
     }
-    if (const auto problem = core::pointer_settings_problem(config.core.pointer);
-        !problem.empty()) {
-        problems.emplace_back(problem);
+    // Broken pointer settings never make the pointer divide by zero (an empty active region maps
+    // the whole frame), but clicks would do what the values say.
+    const auto& motion = config.core.pointer.motion;
+    if (!(motion.active_left < motion.active_right)) {
+        problems.push_back("pointer.active_left must be below pointer.active_right");
+    }
+    if (!(motion.active_top < motion.active_bottom)) {
+        problems.push_back("pointer.active_top must be below pointer.active_bottom");
+    }
+    const auto& click = config.core.pointer.click;
+    if (!(click.release_rise < click.press_rise)) {
+        problems.push_back(
+            "click.release_rise must be below click.press_rise, or a press releases at once");
+    }
+    if (!(click.start_rise < click.press_rise)) {
+        problems.push_back(
+            "click.start_rise must be below click.press_rise: a push begins before it presses");
     }
     return problems;
 }

@@ -1,6 +1,7 @@
 // The table itself: every setting, once. Defaults come from the structs in core/settings.hpp.
 
 #include "key_builders.hpp"
+#include "raypoint/core/estimator.hpp"
 
 namespace raypoint::config {
 
@@ -52,10 +53,7 @@ const std::vector<Key>& schema() {
         // [estimator] paper 3
         choice_key<EstimatorKind>(
             "estimator", "method", "object projection feature estimator (paper 3.1-3.4)",
-            {{EstimatorKind::ray, "ray"},
-             {EstimatorKind::iterative_ray, "iterative-ray"},
-             {EstimatorKind::iterative_ny_ray, "iterative-ny-ray"},
-             {EstimatorKind::raster, "raster"}},
+            {core::estimator_names.begin(), core::estimator_names.end()},
             [](auto& c) -> auto& { return c.core.estimator.kind; }),
         integer_key(
             "estimator", "rays", 3, 256, "n: rays cast from each origin",

@@ -1,20 +1,7 @@
-#include <array>
-#include <utility>
-
 #include "raster_estimator.hpp"
 #include "ray_estimators.hpp"
 
 namespace raypoint::core {
-namespace {
-
-constexpr std::array<std::pair<EstimatorKind, std::string_view>, 4> estimator_names{{
-    {EstimatorKind::ray, "ray"},
-    {EstimatorKind::iterative_ray, "iterative-ray"},
-    {EstimatorKind::iterative_ny_ray, "iterative-ny-ray"},
-    {EstimatorKind::raster, "raster"},
-}};
-
-}  // namespace
 
 std::unique_ptr<Estimator> make_estimator(const EstimatorSettings& settings) {
     switch (settings.kind) {

@@ -92,7 +92,7 @@ StepResult StateMachine::step(Timestamp timestamp, FrameEvidence& evidence) noex
 // predecessor.
 bool StateMachine::on_initializing() noexcept {
     if (!started_at_) started_at_ = now_;
-    if (static_cast<double>(now_ - *started_at_) >= settings_.startup_seconds * 1e6) {
+    if (now_ - *started_at_ >= seconds_to_us(settings_.startup_seconds)) {
         state_ = TrackerState::searching;
     }
     return true;
@@ -208,8 +208,7 @@ LossReason StateMachine::area_check(double area) const noexcept {
 }
 
 bool StateMachine::still_too_long() const noexcept {
-    return still_since_ &&
-           static_cast<double>(now_ - *still_since_) >= settings_.idle_seconds * 1e6;
+    return still_since_ && now_ - *still_since_ >= seconds_to_us(settings_.idle_seconds);
 }
 
 void StateMachine::drop_target(LossReason reason) noexcept {

@@ -50,7 +50,10 @@ class TruthLine {
 
   private:
     std::optional<std::string_view> find(std::string_view key) const {
-        const std::string quoted = "\"" + std::string(key) + "\"";
+        // Appended: on `"\"" + std::string(...)` GCC 12 at -O2 and above gives a false -Wrestrict
+        // warning.
+        std::string quoted(1, '"');
+        quoted.append(key).push_back('"');
         auto at = line_.find(quoted);
         if (at == std::string_view::npos) return std::nullopt;
         at = line_.find(':', at + quoted.size());

@@ -1,6 +1,7 @@
 #include "result_writer.hpp"
 
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 namespace raypoint::daemon {
@@ -28,17 +29,24 @@ void ResultWriter::write(const core::FrameResult& r, long microseconds) {
     std::string line;
     switch (format_) {
         case OutputFormat::jsonl: {
-            const auto pair = [](cv::Point2d p) {
-                return "[" + number(p.x) + "," + number(p.y) + "]";
+            // Appended: on `"[" + std::string` GCC 12 at -O2 and above gives a false -Wrestrict
+            // warning.
+            const auto array = [](std::initializer_list<double> values) {
+                std::string text(1, '[');
+                for (const double value : values) {
+                    if (text.size() > 1) text.push_back(',');
+                    text += number(value);
+                }
+                text.push_back(']');
+                return text;
             };
+            const auto pair = [&array](cv::Point2d p) { return array({p.x, p.y}); };
             line = "{\"frame\":" + std::to_string(r.frame) + ",\"t\":" + number(seconds) +
                    ",\"state\":\"" + state +
                    "\",\"centroid\":" + (r.has_target ? pair(r.centroid) : "null") +
                    ",\"area\":" + (r.has_target && r.area ? number(*r.area) : "null") +
                    ",\"inner\":" + (r.has_target ? pair(r.inner) : "null") + ",\"position\":" +
-                   (r.has_position ? "[" + number(r.position.x) + "," + number(r.position.y) + "," +
-                                         number(r.position.z) + "]"
-                                   : "null") +
+                   (r.has_position ? array({r.position.x, r.position.y, r.position.z}) : "null") +
                    ",\"movement\":" + std::to_string(movement) +
                    ",\"us\":" + std::to_string(microseconds) + "}\n";
             break;

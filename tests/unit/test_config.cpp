@@ -79,9 +79,9 @@ TEST(Schema, EveryDefaultFormatsAndParsesBack) {
         SCOPED_TRACE(key.full_name());
         const std::string text = key.format(Config{});
         Config changed;
-        ASSERT_EQ(key.parse(changed, other_value(key)), std::nullopt);
+        ASSERT_EQ(key.set(changed, other_value(key)), std::nullopt);
         ASSERT_NE(key.format(changed), text);
-        EXPECT_EQ(key.parse(changed, text), std::nullopt);
+        EXPECT_EQ(key.set(changed, text), std::nullopt);
         EXPECT_EQ(key.format(changed), text);
         EXPECT_EQ(formatted(changed), formatted(Config{}));
     }
@@ -96,7 +96,7 @@ TEST(Schema, NumericRangeEdges) {
             const std::string text = key.type == ValueType::integer
                                          ? std::to_string(static_cast<long long>(edge))
                                          : full_text(edge);
-            EXPECT_EQ(key.parse(config, text), std::nullopt) << text;
+            EXPECT_EQ(key.set(config, text), std::nullopt) << text;
             EXPECT_EQ(std::stod(key.format(config)), edge);
         }
         const double step =
@@ -108,11 +108,11 @@ TEST(Schema, NumericRangeEdges) {
                                                   : full_text(v);
         };
         const Config before = config;
-        EXPECT_EQ(key.parse(config, outside(key.min - step)), "value out of range");
-        EXPECT_EQ(key.parse(config, outside(key.max + step)), "value out of range");
+        EXPECT_EQ(key.set(config, outside(key.min - step)), "value out of range");
+        EXPECT_EQ(key.set(config, outside(key.max + step)), "value out of range");
         EXPECT_EQ(formatted(config), formatted(before));  // a rejected value changes nothing
-        EXPECT_NE(key.parse(config, "12abc"), std::nullopt);
-        EXPECT_NE(key.parse(config, ""), std::nullopt);
+        EXPECT_NE(key.set(config, "12abc"), std::nullopt);
+        EXPECT_NE(key.set(config, ""), std::nullopt);
         // "min..max", each reading back as the exact bound.
         const std::string allowed = key.allowed();
         const auto dots = allowed.find("..");
@@ -129,13 +129,13 @@ TEST(Schema, RealsFormatToTheExactDouble) {
         SCOPED_TRACE(key.full_name());
         Config config;
         for (const double v : {key.min + (key.max - key.min) / 3.0, key.min, key.max}) {
-            ASSERT_EQ(key.parse(config, full_text(v)), std::nullopt);
+            ASSERT_EQ(key.set(config, full_text(v)), std::nullopt);
             EXPECT_EQ(std::stod(key.format(config)), v) << key.format(config);
         }
     }
     const Key* min_area = find_key("tracking", "min_area");
     Config config;
-    ASSERT_EQ(min_area->parse(config, "0.020000000000000000"), std::nullopt);
+    ASSERT_EQ(min_area->set(config, "0.020000000000000000"), std::nullopt);
     EXPECT_EQ(min_area->format(config), "0.02");
 }
 
@@ -146,14 +146,14 @@ TEST(Schema, EveryChoiceAcceptedAndAWrongWordRejected) {
         Config config;
         std::string joined;
         for (const auto choice : key.choices) {
-            EXPECT_EQ(key.parse(config, choice), std::nullopt);
+            EXPECT_EQ(key.set(config, choice), std::nullopt);
             EXPECT_EQ(key.format(config), choice);
             joined += (joined.empty() ? "" : "|") + std::string(choice);
         }
         EXPECT_EQ(key.allowed(), joined);
         const std::string before = key.format(config);
-        EXPECT_NE(key.parse(config, "nope"), std::nullopt);
-        EXPECT_NE(key.parse(config, std::string(key.choices.front()) + " "), std::nullopt);
+        EXPECT_NE(key.set(config, "nope"), std::nullopt);
+        EXPECT_NE(key.set(config, std::string(key.choices.front()) + " "), std::nullopt);
         EXPECT_EQ(key.format(config), before);
     }
 }
@@ -164,15 +164,15 @@ TEST(Schema, BooleanSpellings) {
     Config config;
     for (const char* yes : {"true", "yes", "on", "1"}) {
         config.core.tracking.keep_still_target = false;
-        EXPECT_EQ(key->parse(config, yes), std::nullopt);
+        EXPECT_EQ(key->set(config, yes), std::nullopt);
         EXPECT_TRUE(config.core.tracking.keep_still_target) << yes;
     }
     for (const char* no : {"false", "no", "off", "0"}) {
         config.core.tracking.keep_still_target = true;
-        EXPECT_EQ(key->parse(config, no), std::nullopt);
+        EXPECT_EQ(key->set(config, no), std::nullopt);
         EXPECT_FALSE(config.core.tracking.keep_still_target) << no;
     }
-    EXPECT_EQ(key->parse(config, "True"), "not a boolean");
+    EXPECT_EQ(key->set(config, "True"), "not a boolean");
 }
 
 std::string error_of(std::string_view assignment) {
@@ -261,10 +261,33 @@ TEST(CrossCheck, EachRuleHasItsMessage) {
     EXPECT_EQ(cross_check(config).size(), 2U);
 }
 
+TEST(CrossCheck, PointerRulesHaveTheirMessages) {
+    using Problems = std::vector<std::string>;
+    Config config;
+    config.core.pointer.motion.active_left = 0.9;
+    config.core.pointer.motion.active_right = 0.1;
+    EXPECT_EQ(cross_check(config),
+              Problems{"pointer.active_left must be below pointer.active_right"});
+    config = Config{};
+    config.core.pointer.motion.active_bottom = config.core.pointer.motion.active_top;
+    EXPECT_EQ(cross_check(config),
+              Problems{"pointer.active_top must be below pointer.active_bottom"});
+    config = Config{};
+    config.core.pointer.click.release_rise = config.core.pointer.click.press_rise;
+    EXPECT_EQ(cross_check(config), Problems{"click.release_rise must be below click.press_rise, "
+                                            "or a press releases at once"});
+    config = Config{};
+    config.core.pointer.click.start_rise = 0.3;
+    EXPECT_EQ(cross_check(config), Problems{"click.start_rise must be below click.press_rise: a "
+                                            "push begins before it presses"});
+    config.core.pointer.motion.active_left = 1.0;  // every broken rule is reported
+    EXPECT_EQ(cross_check(config).size(), 2U);
+}
+
 TEST(Ini, RoundTripsLineByLineThroughApplyAssignment) {
     Config source;
     for (const Key& key : schema()) {
-        ASSERT_EQ(key.parse(source, other_value(key)), std::nullopt) << key.full_name();
+        ASSERT_EQ(key.set(source, other_value(key)), std::nullopt) << key.full_name();
     }
     ASSERT_NE(formatted(source), formatted(Config{}));
     const std::string ini = to_ini(source);

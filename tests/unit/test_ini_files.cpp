@@ -165,7 +165,7 @@ TEST(IniFiles, PrintConfigOutputRoundTrips) {
         }
         for (const auto& value : candidates) {
             if (key.format(changed) != key.format(Config{})) break;
-            ASSERT_EQ(key.parse(changed, value), std::nullopt) << key.full_name() << value;
+            ASSERT_EQ(key.set(changed, value), std::nullopt) << key.full_name() << value;
         }
         EXPECT_NE(key.format(changed), key.format(Config{})) << key.full_name();
     }

@@ -2,6 +2,7 @@
 // kind of wrong line answered with its exact "file:line:" message, all of them, in line order.
 
 #include <string>
+#include <variant>
 
 #include <gtest/gtest.h>
 
@@ -30,7 +31,7 @@ TEST(IniSyntax, WhitespaceAroundEverythingIsTrimmed) {
     EXPECT_EQ(loaded.config.core.estimator.rays, 8);
     EXPECT_EQ(loaded.config.core.estimator.kind, core::EstimatorKind::ray);
     ASSERT_EQ(loaded.file.settings.size(), 2U);
-    EXPECT_EQ(loaded.file.settings[0].value, "8");
+    EXPECT_EQ(std::get<int>(loaded.file.settings[0].value), 8);
     EXPECT_EQ(loaded.file.settings[0].line, 2);
 }
 

@@ -169,23 +169,6 @@ TEST(PointerMotion, RepeatedTimestampMovesNothing) {
     // clang-format on
 }
 
-TEST(PointerSettingsCheck, NamesTheBrokenRule) {
-    EXPECT_EQ(pointer_settings_problem(PointerSettings{}), "");
-    PointerSettings s;
-    s.motion.active_left = 0.9;
-    s.motion.active_right = 0.1;
-    EXPECT_NE(pointer_settings_problem(s).find("active_left"), std::string_view::npos);
-    s = PointerSettings{};
-    s.motion.active_bottom = s.motion.active_top;
-    EXPECT_NE(pointer_settings_problem(s).find("active_top"), std::string_view::npos);
-    s = PointerSettings{};
-    s.click.release_rise = s.click.press_rise;
-    EXPECT_NE(pointer_settings_problem(s).find("release_rise"), std::string_view::npos);
-    s = PointerSettings{};
-    s.click.start_rise = 0.3;
-    EXPECT_NE(pointer_settings_problem(s).find("start_rise"), std::string_view::npos);
-}
-
 // The per-frame path cannot allocate: nothing in the pointer owns memory (no container, no
 // pointer), which trivially copyable types guarantee, and update() builds none.
 static_assert(std::is_trivially_copyable_v<PointerController>);

@@ -28,7 +28,7 @@ constexpr int buffer_count = 4;  // enough to absorb a slow frame without the dr
 core::Timestamp monotonic_us() {
     timespec now{};
     clock_gettime(CLOCK_MONOTONIC, &now);
-    return static_cast<core::Timestamp>(now.tv_sec) * 1'000'000 + now.tv_nsec / 1000;
+    return core::seconds_to_us(std::int64_t{now.tv_sec}) + now.tv_nsec / 1000;
 }
 
 }  // namespace
@@ -263,10 +263,10 @@ Capture V4l2Camera::next(int timeout_ms) {
         // The driver's capture time is closest to the light: prefer it when it is monotonic.
         const bool monotonic =
             (buffer.flags & V4L2_BUF_FLAG_TIMESTAMP_MASK) == V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC;
-        capture.frame.timestamp =
-            monotonic ? static_cast<core::Timestamp>(buffer.timestamp.tv_sec) * 1'000'000 +
-                            buffer.timestamp.tv_usec
-                      : monotonic_us();
+        capture.frame.timestamp = monotonic
+                                      ? core::seconds_to_us(std::int64_t{buffer.timestamp.tv_sec}) +
+                                            buffer.timestamp.tv_usec
+                                      : monotonic_us();
         // V4L2_BUF_FLAG_ERROR: the driver says the data is corrupt (a USB packet was lost).
         const bool corrupt = (buffer.flags & V4L2_BUF_FLAG_ERROR) != 0;
         if (corrupt || !make_frame(buffer.index, buffer.bytesused, capture)) {

@@ -68,7 +68,7 @@ config::Config parse_settings_options(std::span<const std::string_view> args,
         } else if (option == "--estimator") {
             const std::string_view name = option_value(args, i);
             const config::Key* key = config::find_key("estimator", "method");
-            if (key->parse(config, name)) {
+            if (key->set(config, name)) {
                 throw UsageError("--estimator " + std::string(name) +
                                  ": unknown estimator (allowed: " + key->allowed() + ")");
             }

@@ -38,7 +38,7 @@ RealtimeSource::~RealtimeSource() {
 }
 
 core::Timestamp RealtimeSource::due(std::int64_t serial) const noexcept {
-    return start_ + std::llround(static_cast<double>(serial) * 1e6 / clip_.fps());
+    return start_ + core::seconds_to_us(static_cast<double>(serial) / clip_.fps());
 }
 
 void RealtimeSource::arm(core::Timestamp when) noexcept {
@@ -47,6 +47,14 @@ void RealtimeSource::arm(core::Timestamp when) noexcept {
     at.it_value.tv_nsec = static_cast<long>(when % 1'000'000) * 1000;
     // Cannot fail with a valid descriptor and value; a past instant expires at once.
     (void)timerfd_settime(timer_fd_, TFD_TIMER_ABSTIME, &at, nullptr);
+}
+
+void RealtimeSource::clear_timer() noexcept {
+    std::uint64_t expirations = 0;
+    // EAGAIN: the timer has not fired (a frame already due was taken without it), so there is
+    // nothing to clear. A signal may interrupt the read; nothing else can fail on our timerfd.
+    while (read(timer_fd_, &expirations, sizeof expirations) < 0 && errno == EINTR) {
+    }
 }
 
 Capture RealtimeSource::next(int timeout_ms) {
@@ -60,8 +68,7 @@ Capture RealtimeSource::next(int timeout_ms) {
         if (poll(&timer, 1, timeout_ms) <= 0) return capture;  // timeout (or EINTR: asked again)
         now = monotonic_now_us();
     }
-    std::uint64_t expirations = 0;
-    (void)read(timer_fd_, &expirations, sizeof expirations);  // unreadable until armed again
+    clear_timer();
     if (start_ < 0) start_ = now;
     // The newest frame due by now; with more than `waiting_limit` waiting, the older ones were
     // overwritten, as in a camera's full buffer queue.

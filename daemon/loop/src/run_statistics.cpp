@@ -29,7 +29,7 @@ long resident_kb() noexcept {
 core::Timestamp monotonic_now_us() noexcept {
     timespec now{};
     clock_gettime(CLOCK_MONOTONIC, &now);
-    return static_cast<core::Timestamp>(now.tv_sec) * 1'000'000 + now.tv_nsec / 1000;
+    return core::seconds_to_us(std::int64_t{now.tv_sec}) + now.tv_nsec / 1000;
 }
 
 RunStatistics::RunStatistics() : window_start_(Clock::now()), window_cpu_(cpu_seconds()) {

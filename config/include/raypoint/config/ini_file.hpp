@@ -37,10 +37,10 @@ inline constexpr std::string_view general_section = "general";
 inline constexpr std::string_view preset_key = "preset";
 inline constexpr std::string_view preset_names = "default|paper";  // apply_preset's
 
-// One "key = value" line naming a key of the schema, with a value the key accepts.
+// One "key = value" line naming a key of the schema, with the value read from it.
 struct IniSetting {
     const Key* key = nullptr;
-    std::string value;  // trimmed, comment removed
+    Value value;  // what key->parse() read; key->assign() stores it
     int line = 0;
 };
 
@@ -61,8 +61,8 @@ IniFile parse_ini(std::string_view text, std::string name);
 IniFile read_ini_file(const std::filesystem::path& path);
 
 // The preset (`preset`, else the file's [general] preset, else "default"), then every setting of
-// the file. Appends a message for anything that fails (an unknown preset); no cross-checks, so
-// that the command line can still change what the file set.
+// the file. Appends a message for an unknown `preset`; no cross-checks, so that the command line
+// can still change what the file set.
 Config config_from_file(const IniFile& file, std::optional<std::string_view> preset,
                         std::vector<std::string>& errors);
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "raypoint/config/config.hpp"
@@ -17,20 +18,32 @@ namespace raypoint::config {
 // device: `auto` or a path under /dev (a camera).
 enum class ValueType { integer, real, boolean, choice, device };
 
+// A choice key's value: the position of its text in Key::choices.
+struct ChoiceIndex {
+    std::size_t index = 0;
+};
+// A value read from text by Key::parse, kept so that it is applied without being read again:
+// integer, real, boolean, choice, device (its path).
+using Value = std::variant<int, double, bool, ChoiceIndex, std::string>;
+
 struct Key {
     std::string_view section;
     std::string_view name;
-    ValueType type;
+    ValueType type = ValueType::integer;
     double min = 0.0;  // integer and real
     double max = 0.0;
     std::vector<std::string_view> choices;  // choice
     std::string_view doc;
     std::function<std::string(const Config&)> format;
-    // Sets the value from text; returns the reason when the text is not a valid value.
-    std::function<std::optional<std::string>(Config&, std::string_view)> parse;
+    // Reads a value from text into `value`; returns the reason when the text is not a valid one.
+    std::function<std::optional<std::string>(std::string_view text, Value& value)> parse;
+    // Stores a value parse() gave into the configuration.
+    std::function<void(Config&, const Value&)> assign;
 
     std::string full_name() const;  // "section.name"
     std::string allowed() const;    // "16..256", "true|false", "ray|raster"
+    // parse(), then assign() when the text is valid; returns parse()'s reason otherwise.
+    std::optional<std::string> set(Config& config, std::string_view text) const;
 };
 
 const std::vector<Key>& schema();

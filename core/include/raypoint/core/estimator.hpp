@@ -3,8 +3,10 @@
 // inside the target's projection (the inner point), estimate the projection's centroid and area
 // and move the inner point to where it is likeliest to stay inside in the next frame.
 
+#include <array>
 #include <memory>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -47,6 +49,15 @@ class Estimator {
 };
 
 std::unique_ptr<Estimator> make_estimator(const EstimatorSettings& settings);
+
+// Every estimator and its name, the one list of them: the names of --estimator and of the
+// configuration's estimator.method, in the order they are offered.
+inline constexpr std::array<std::pair<EstimatorKind, std::string_view>, 4> estimator_names{{
+    {EstimatorKind::ray, "ray"},
+    {EstimatorKind::iterative_ray, "iterative-ray"},
+    {EstimatorKind::iterative_ny_ray, "iterative-ny-ray"},
+    {EstimatorKind::raster, "raster"},
+}};
 
 // "ray", "iterative-ray", "iterative-ny-ray", "raster".
 std::string_view to_string(EstimatorKind kind) noexcept;

@@ -9,8 +9,13 @@ namespace raypoint::core {
 // so a recorded clip replays exactly as it ran live (docs/design.md rule 2).
 using Timestamp = std::int64_t;
 
+// Every conversion from seconds to Timestamp goes through these, so all round the same way.
 constexpr Timestamp seconds_to_us(double seconds) noexcept {
     return static_cast<Timestamp>(seconds * 1e6);
+}
+// Whole seconds (a timespec's or timeval's tv_sec), exactly.
+constexpr Timestamp seconds_to_us(std::int64_t seconds) noexcept {
+    return seconds * 1'000'000;
 }
 
 enum class PixelFormat {

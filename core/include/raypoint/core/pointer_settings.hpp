@@ -1,9 +1,8 @@
 #pragma once
 // Every tunable of the pointer: how the tracked position moves the cursor, how a push toward the
 // camera or a dwell clicks, and when clicks are allowed at all. Plain data; config/schema_table.cpp
-// names, ranges and documents each key, and docs/pointer.md says why each default is what it is.
-
-#include <string_view>
+// names, ranges and documents each key (config/schema.cpp checks the rules across keys), and
+// docs/pointer.md says why each default is what it is.
 
 namespace raypoint::core {
 
@@ -90,10 +89,5 @@ struct PointerSettings {
     DwellSettings dwell;
     SafetySettings safety;
 };
-
-// The first rule across keys that `settings` breaks, as a complete sentence; empty when none.
-// For config's cross_check. With broken settings the classes still never divide by zero (an
-// empty active region maps the whole frame), but clicks do what the values say.
-std::string_view pointer_settings_problem(const PointerSettings& settings) noexcept;
 
 }  // namespace raypoint::core

@@ -1,7 +1,7 @@
 #pragma once
 // Every tunable of the tracking core, as plain data. Defaults are the paper's numbers unless the
-// comment says otherwise; config/schema.cpp is the one place that names, ranges and documents
-// them, and docs/settings.md explains each deviation from the paper.
+// comment says otherwise; config/src/schema_table.cpp is the one place that names, ranges and
+// documents them, and docs/settings.md explains each deviation from the paper.
 
 #include "raypoint/core/pointer_settings.hpp"
 

@@ -41,6 +41,8 @@ class RealtimeSource final : public FrameSource {
   private:
     core::Timestamp due(std::int64_t serial) const noexcept;  // CLOCK_MONOTONIC microseconds
     void arm(core::Timestamp when) noexcept;
+    // Reads the timer's expirations, so that poll() on it waits until it is armed again.
+    void clear_timer() noexcept;
 
     YuyvClip clip_;
     std::string label_;
