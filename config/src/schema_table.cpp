@@ -134,6 +134,14 @@ const std::vector<Key>& schema() {
         integer_key(
             "tracking", "recovery_far", 1, 200, "far recovery offset, working pixels",
             [](auto& c) -> auto& { return c.core.tracking.recovery_far; }),
+        choice_key<InstructionsSetting>(
+            "tracking", "instructions",
+            "preprocessing's vector instructions: auto (measured at start) or one for both stages",
+            {{InstructionsSetting::automatic, "auto"},
+             {InstructionsSetting::scalar, "scalar"},
+             {InstructionsSetting::sse2, "sse2"},
+             {InstructionsSetting::avx2, "avx2"}},
+            [](auto& c) -> auto& { return c.instructions; }),
         // [output] paper 4.3
         choice_key<SmoothingKind>(
             "output", "smoothing", "position smoothing: exponential once a frame, or One Euro",

@@ -1,7 +1,8 @@
 // The whole core, frame in -> position out (Tracker::process), in the steady state of a
 // tracked target: every input size and format, each instruction set at 640x480, and the
 // estimator's n, y, m around the defaults at 640x480 BGR (target: <= 150 us at 640x480,
-// docs/performance.md).
+// docs/performance.md); and every combination of the filter's and the edges' sets at 640x480
+// (what InstructionTrial chooses from).
 
 #include <benchmark/benchmark.h>
 
@@ -41,18 +42,15 @@ void tracker_arguments(benchmark::internal::Benchmark* b) {
         b->Args({640, 480, 0, best, n, y, block});
 }
 
-void BM_Tracker(benchmark::State& state) {
-    const Clip clip({static_cast<int>(state.range(0)), static_cast<int>(state.range(1))},
-                    format_argument(state.range(2)), clip_frames);
+// The steady state of a tracked target at `size`: warmed up into TRACKING first.
+void run_tracker(benchmark::State& state, cv::Size size, long format,
+                 core::StageInstructions instructions, const core::EstimatorSettings& estimator) {
+    const Clip clip(size, format_argument(format), clip_frames);
     core::Settings settings;
     settings.tracking.startup_seconds = 0.0;
-    settings.estimator.rays = static_cast<int>(state.range(4));
-    settings.estimator.recasts = static_cast<int>(state.range(5));
-    settings.estimator.block_size = static_cast<int>(state.range(6));
-    const auto instructions = static_cast<InstructionSet>(state.range(3));
+    settings.estimator = estimator;
     core::Tracker tracker(settings, instructions);
     long index = 0;
-    // Warm up into TRACKING, so the timed frames are the steady state of a tracked target.
     for (; index < clip_frames; ++index)
         tracker.process(clip.view(index));
     long tracked = 0;
@@ -61,17 +59,51 @@ void BM_Tracker(benchmark::State& state) {
         tracked += result.has_position ? 1 : 0;
         benchmark::DoNotOptimize(result);
     }
-    state.SetLabel(std::string(format_name(clip.view(0).format)) + " " +
-                   std::string(core::to_string(instructions)));
+    const std::string sets = instructions.filter == instructions.edges
+                                 ? std::string(core::to_string(instructions.filter))
+                                 : "filter " + std::string(core::to_string(instructions.filter)) +
+                                       " edges " + std::string(core::to_string(instructions.edges));
+    state.SetLabel(std::string(format_name(clip.view(0).format)) + " " + sets);
     state.counters["tracked"] =
         static_cast<double>(tracked) / static_cast<double>(state.iterations());
     state.counters["fps"] =
         benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+void BM_Tracker(benchmark::State& state) {
+    core::EstimatorSettings estimator;
+    estimator.rays = static_cast<int>(state.range(4));
+    estimator.recasts = static_cast<int>(state.range(5));
+    estimator.block_size = static_cast<int>(state.range(6));
+    run_tracker(
+        state, {static_cast<int>(state.range(0)), static_cast<int>(state.range(1))}, state.range(2),
+        core::StageInstructions::both(static_cast<InstructionSet>(state.range(3))), estimator);
+}
+
+// {format, filter set, edge set}: every combination the CPU runs, at 640x480 with the default
+// estimator (the candidates of InstructionTrial).
+void stage_set_arguments(benchmark::internal::Benchmark* b) {
+    b->ArgNames({"yuyv", "filter", "edges"});
+    const auto best = static_cast<long>(core::best_instruction_set());
+    for (const long format : {0L, 1L}) {
+        for (long filter = 0; filter <= best; ++filter) {
+            for (long edges = 0; edges <= best; ++edges)
+                b->Args({format, filter, edges});
+        }
+    }
+}
+
+void BM_TrackerStageSets(benchmark::State& state) {
+    run_tracker(
+        state, {640, 480}, state.range(0),
+        {static_cast<InstructionSet>(state.range(1)), static_cast<InstructionSet>(state.range(2))},
+        core::EstimatorSettings{});
+}
+
 }  // namespace
 
 BENCHMARK(BM_Tracker)->Apply(tracker_arguments);
+BENCHMARK(BM_TrackerStageSets)->Apply(stage_set_arguments);
 
 }  // namespace raypoint::bench
 

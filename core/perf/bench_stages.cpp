@@ -36,7 +36,7 @@ struct Setup {
         : clip({static_cast<int>(state.range(0)), static_cast<int>(state.range(1))},
                format_argument(state.range(2)), clip_frames),
           instructions(static_cast<InstructionSet>(state.range(3))),
-          preprocessor(settings(state.range(4)), instructions) {}
+          preprocessor(settings(state.range(4)), core::StageInstructions::both(instructions)) {}
 
     static core::PreprocessSettings settings(long source) {
         core::PreprocessSettings s;

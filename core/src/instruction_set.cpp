@@ -11,6 +11,10 @@ InstructionSet best_instruction_set() noexcept {
 #endif
 }
 
+InstructionSet clamp_instruction_set(InstructionSet wanted, InstructionSet best) noexcept {
+    return wanted <= best ? wanted : best;
+}
+
 std::string_view to_string(InstructionSet set) noexcept {
     switch (set) {
         case InstructionSet::scalar:

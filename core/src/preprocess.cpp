@@ -4,8 +4,15 @@
 
 namespace raypoint::core {
 
-Preprocessor::Preprocessor(const PreprocessSettings& settings, InstructionSet instructions)
-    : filter_(settings, instructions), edges_(settings, instructions), difference_(settings) {}
+Preprocessor::Preprocessor(const PreprocessSettings& settings, StageInstructions instructions)
+    : filter_(settings, instructions.filter),
+      edges_(settings, instructions.edges),
+      difference_(settings) {}
+
+void Preprocessor::set_instructions(StageInstructions instructions) noexcept {
+    filter_.set_instructions(instructions.filter);
+    edges_.set_instructions(instructions.edges);
+}
 
 bool Preprocessor::process(const FrameView& frame) noexcept {
     if (!filter(frame)) return false;

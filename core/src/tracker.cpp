@@ -10,7 +10,7 @@
 namespace raypoint::core {
 
 struct Tracker::Impl {
-    Impl(const Settings& s, InstructionSet instructions)
+    Impl(const Settings& s, StageInstructions instructions)
         : settings(s),
           preprocessor(s.preprocess, instructions),
           estimator(make_estimator(s.estimator)),
@@ -29,9 +29,17 @@ struct Tracker::Impl {
     EstimatorTrace empty_trace;
 };
 
-Tracker::Tracker(const Settings& settings, InstructionSet instructions)
+Tracker::Tracker(const Settings& settings, StageInstructions instructions)
     : impl_(std::make_unique<Impl>(settings, instructions)) {}
 Tracker::~Tracker() = default;
+
+void Tracker::set_instructions(StageInstructions instructions) noexcept {
+    impl_->preprocessor.set_instructions(instructions);
+}
+
+StageInstructions Tracker::instructions() const noexcept {
+    return impl_->preprocessor.instructions();
+}
 
 const Settings& Tracker::settings() const noexcept {
     return impl_->settings;

@@ -96,7 +96,7 @@ void expect_matches_reference(cv::Size size, PixelFormat format) {
     cv::Mat expected_grey;
     cv::cvtColor(expected, expected_grey, cv::COLOR_BGR2GRAY);
     for (const InstructionSet set : runnable_sets()) {
-        Preprocessor preprocessor(settings, set);
+        Preprocessor preprocessor(settings, raypoint::core::StageInstructions::both(set));
         ASSERT_TRUE(preprocessor.process(FrameView{frame.data, size.width, size.height,
                                                    static_cast<int>(frame.step), format, 0}));
         const std::string where = std::to_string(size.width) + "x" + std::to_string(size.height) +
@@ -143,7 +143,8 @@ TEST(FilterReference, EveryInstructionSetGivesTheSameImages) {
         settings.edge_threshold = 8;
         std::vector<std::unique_ptr<Preprocessor>> runs;
         for (const InstructionSet set : runnable_sets()) {
-            runs.push_back(std::make_unique<Preprocessor>(settings, set));
+            runs.push_back(std::make_unique<Preprocessor>(
+                settings, raypoint::core::StageInstructions::both(set)));
             for (const auto& frame : frames) {
                 ASSERT_TRUE(runs.back()->process(FrameView{frame.data, size.width, size.height,
                                                            static_cast<int>(frame.step),

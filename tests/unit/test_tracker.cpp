@@ -3,11 +3,14 @@
 // values that the brightness compensation (paper 4.1) removes most of a clean disk's movement.
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "frames.hpp"
+#include "raypoint/core/instruction_set.hpp"
+#include "raypoint/core/stage_instructions.hpp"
 #include "raypoint/core/tracker.hpp"
 
 namespace raypoint::core {
@@ -153,6 +156,54 @@ TEST(Tracker, YuyvAndBgrOfTheSameSceneAgree) {
         ++compared;
     }
     EXPECT_GE(compared, 15);
+}
+
+// The daemon switches the sets between frames while INITIALIZING (InstructionTrial): a Tracker
+// switched every frame through every combination the CPU runs gives exactly what one that never
+// switched gives, state, positions and images, for BGR and YUYV input.
+TEST(Tracker, SwitchingInstructionSetsBetweenFramesChangesNothing) {
+    const int widest = static_cast<int>(best_instruction_set());
+    std::vector<StageInstructions> combinations;
+    for (int f = 0; f <= widest; ++f) {
+        for (int e = 0; e <= widest; ++e)
+            combinations.push_back(
+                {static_cast<InstructionSet>(f), static_cast<InstructionSet>(e)});
+    }
+    for (const bool packed : {false, true}) {
+        SCOPED_TRACE(packed ? "YUYV" : "BGR");
+        Tracker fixed(settings(), StageInstructions::both(InstructionSet::scalar));
+        Tracker switched(settings());
+        int tracked = 0;
+        for (int i = 0; i < 90; ++i) {
+            SCOPED_TRACE(::testing::Message() << "frame " << i);
+            switched.set_instructions(
+                combinations[static_cast<std::size_t>(i) % combinations.size()]);
+            EXPECT_EQ(switched.instructions(),
+                      combinations[static_cast<std::size_t>(i) % combinations.size()]);
+            const cv::Mat image = test::noisy_disk(i, path(i), 50);
+            const test::Yuyv yuyv = test::to_yuyv(image, 32);
+            const FrameView view = packed ? yuyv.view(at(i)) : test::bgr_view(image, at(i));
+            const FrameResult a = fixed.process(view);
+            const FrameResult b = switched.process(view);
+            ASSERT_EQ(a.state, b.state);
+            ASSERT_EQ(a.has_target, b.has_target);
+            EXPECT_EQ(a.movement, b.movement);
+            EXPECT_EQ(a.iterations, b.iterations);
+            EXPECT_EQ(a.centroid, b.centroid);
+            EXPECT_EQ(a.inner, b.inner);
+            EXPECT_EQ(a.area, b.area);
+            ASSERT_EQ(a.has_position, b.has_position);
+            EXPECT_EQ(a.position, b.position);
+            tracked += a.has_position ? 1 : 0;
+            for (const auto& [x, y] :
+                 {std::pair{&fixed.images().color, &switched.images().color},
+                  std::pair{&fixed.images().edges, &switched.images().edges},
+                  std::pair{&fixed.images().difference, &switched.images().difference}}) {
+                ASSERT_EQ(cv::norm(*x, *y, cv::NORM_INF), 0.0);
+            }
+        }
+        EXPECT_GE(tracked, 15);  // the comparison covered tracking, not only the start
+    }
 }
 
 }  // namespace

@@ -3,18 +3,27 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <opencv2/imgproc.hpp>
 
 #include "raypoint/capture/v4l2_device.hpp"
 #include "raypoint/cli/usage_error.hpp"
 #include "raypoint/config/config_paths.hpp"
 #include "raypoint/config/ini_file.hpp"
 #include "raypoint/control/control_socket.hpp"
+#include "raypoint/core/instruction_trial.hpp"
+#include "raypoint/core/tracker.hpp"
+#include "raypoint/loop/instruction_report.hpp"
+#include "raypoint/loop/yuyv_clip.hpp"
 
 namespace raypoint::daemon {
 namespace {
@@ -115,6 +124,100 @@ Check check_service(std::string& control_path) {
     }
 }
 
+// Frames the trial cycles through: 40 of 640x480 are 37 MB BGR and 25 MB YUYV, more than a
+// last-level cache holds, so each frame comes from memory as a camera's new buffer does. (One
+// frame fed again stays cached, and on AMD Zen 3 that turns the filter's choice around.)
+constexpr int trial_frames = 40;
+
+// A camera-like 640x480 BGR frame: a lit wall (a gradient), a dark disk at `index`'s place,
+// sensor noise. Only its size and format matter to the cost; the content keeps the loops honest.
+cv::Mat drawn_frame(int index) {
+    cv::Mat frame(480, 640, CV_8UC3);
+    for (int y = 0; y < frame.rows; ++y) {
+        auto* row = frame.ptr<cv::Vec3b>(y);
+        for (int x = 0; x < frame.cols; ++x)
+            row[x] = cv::Vec3b(cv::saturate_cast<uchar>(120 + x / 8), 150,
+                               cv::saturate_cast<uchar>(200 - y / 6));
+    }
+    cv::circle(frame, {200 + 6 * index, 240}, 80, cv::Scalar(40, 60, 90), cv::FILLED);
+    cv::Mat noise(frame.size(), CV_8UC3);
+    cv::randu(noise, cv::Scalar::all(0), cv::Scalar::all(8));
+    frame += noise;
+    return frame;
+}
+
+// The trial `raypoint run` makes while INITIALIZING, on `frames` in turn (as many samples as a
+// trial holds: about 0.1 s here). Returns the figures for one format.
+template <typename FrameAt>
+std::string measure_instructions(const core::Settings& settings, FrameAt frame_at,
+                                 const char* format) {
+    const core::InstructionSet best = core::best_instruction_set();
+    core::Tracker tracker(settings);
+    core::InstructionTrial trial(
+        best, std::nullopt,
+        core::InstructionTrial::max_candidates * core::InstructionTrial::max_samples);
+    for (int i = 0; !trial.done(); ++i) {
+        tracker.set_instructions(trial.next_candidate());
+        const core::FrameView frame = frame_at(i, i * core::Timestamp{33'333});  // 30 fps
+        const auto begin = std::chrono::steady_clock::now();
+        tracker.process(frame);
+        trial.record(
+            std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - begin)
+                .count());
+    }
+    double chosen_us = 0.0;
+    double widest_us = 0.0;
+    for (int i = 0; i < trial.candidate_count(); ++i) {
+        if (trial.candidate(i) == trial.chosen()) chosen_us = trial.median(i);
+        if (trial.candidate(i) == core::StageInstructions::both(best)) widest_us = trial.median(i);
+    }
+    std::string text = std::string(format) + " " + describe_instructions(trial.chosen());
+    if (!trial.measured()) return text;
+    return text + " " + std::to_string(std::lround(chosen_us)) + " us (" +
+           std::string(core::to_string(best)) + " for both " +
+           std::to_string(std::lround(widest_us)) + " us)";
+}
+
+// The instruction sets `raypoint run` would use here: the configured set, or measured on drawn
+// 640x480 frames as the daemon measures camera frames.
+Check check_instructions(const config::Config& settings) {
+    const core::InstructionSet best = core::best_instruction_set();
+    if (const auto forced = config::forced_instruction_set(settings.instructions)) {
+        const core::InstructionTrial trial(best, forced);
+        // Clamped, as the daemon does (with a warning in its log): it runs, so not a failure.
+        std::string what = describe_trial(trial, true);
+        if (*forced > best) {
+            what += "; " + std::string(core::to_string(*forced)) + " clamped: this CPU runs " +
+                    std::string(core::to_string(best)) + " at most";
+        }
+        return {true, what, ""};
+    }
+    std::vector<cv::Mat> bgr;
+    YuyvClip yuyv({640, 480}, 30.0);
+    yuyv.reserve(trial_frames);
+    for (int i = 0; i < trial_frames; ++i) {
+        bgr.push_back(drawn_frame(i));
+        yuyv.append(bgr.back());
+    }
+    const auto bgr_at = [&](int i, core::Timestamp timestamp) {
+        const cv::Mat& image = bgr[static_cast<std::size_t>(i % trial_frames)];
+        return core::FrameView{image.data,
+                               image.cols,
+                               image.rows,
+                               static_cast<int>(image.step),
+                               core::PixelFormat::bgr,
+                               timestamp};
+    };
+    const auto yuyv_at = [&](int i, core::Timestamp timestamp) {
+        return yuyv.view(i % trial_frames, timestamp);
+    };
+    return {true,
+            measure_instructions(settings.core, bgr_at, "BGR") + "; " +
+                measure_instructions(settings.core, yuyv_at, "YUYV") +
+                " (median us a 640x480 frame)",
+            ""};
+}
+
 }  // namespace
 
 int doctor_command(std::span<const std::string_view> args) {
@@ -124,6 +227,7 @@ int doctor_command(std::span<const std::string_view> args) {
     print("config", check_config(settings), failures);
     print("camera", check_camera(settings), failures);
     print("uinput", check_uinput(), failures);
+    print("cpu", check_instructions(settings), failures);
     std::string control_path;
     print("service", check_service(control_path), failures);
     std::printf(failures == 0 ? "all checks passed\n" : "%d check(s) failed\n", failures);

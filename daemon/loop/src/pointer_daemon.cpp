@@ -14,6 +14,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "raypoint/loop/instruction_report.hpp"
 #include "raypoint/service/log.hpp"
 
 namespace raypoint::daemon {
@@ -79,6 +80,7 @@ int PointerDaemon::run() {
               std::string(parts_.sink->name()));
     notifier_.ready();
     notifier_.status("initializing");
+    start_instruction_trial();
     const auto started = Clock::now();
     statistics_.start(started);
     if (parts_.duration) stop_at_ = started + *parts_.duration;
@@ -173,7 +175,8 @@ unsigned PointerDaemon::wait_for_events(int source_fd, Clock::time_point deadlin
 void PointerDaemon::on_frame(const Capture& capture) {
     const core::Timestamp handed = monotonic_now_us();
     const core::FrameView& frame = capture.frame;
-    core::FrameResult result = tracker_->process(frame);
+    core::FrameResult result =
+        instruction_trial_.done() ? tracker_->process(frame) : process_in_trial(frame);
     last_timestamp_ = frame.timestamp;
     last_result_ = result;
     statistics_.count_frame();
@@ -189,6 +192,49 @@ void PointerDaemon::on_frame(const Capture& capture) {
     parts_.sink->emit(pointer_->update(result), frame.timestamp);
     // After the write returned: uinput's write(2) of the events, the file sink's fflush.
     statistics_.record_latency(capture.ready, handed, monotonic_now_us());
+}
+
+void PointerDaemon::start_instruction_trial() {
+    const auto forced = config::forced_instruction_set(parts_.config.instructions);
+    const core::InstructionSet best = core::best_instruction_set();
+    if (forced && *forced > best) {
+        log::warning("[tracking] instructions = " + std::string(core::to_string(*forced)) +
+                     ": this CPU runs " + std::string(core::to_string(best)) + " at most; using " +
+                     std::string(core::to_string(best)));
+    }
+    instruction_trial_ = core::InstructionTrial(best, forced);
+    instructions_text_.clear();
+    if (instruction_trial_.done()) {
+        apply_instruction_choice();
+    } else {
+        tracker_->set_instructions(instruction_trial_.next_candidate());
+    }
+}
+
+// Only tracker.process is timed: capture and the sink are the same whatever the sets.
+core::FrameResult PointerDaemon::process_in_trial(const core::FrameView& frame) noexcept {
+    const auto begin = Clock::now();
+    const core::FrameResult result = tracker_->process(frame);
+    instruction_trial_.record(
+        std::chrono::duration<double, std::micro>(Clock::now() - begin).count());
+    if (instruction_trial_.done()) {
+        // Once per trial; logging allocates, which the steady state never reaches.
+        try {
+            apply_instruction_choice();
+        } catch (...) {
+            tracker_->set_instructions(instruction_trial_.chosen());
+        }
+    } else {
+        tracker_->set_instructions(instruction_trial_.next_candidate());
+    }
+    return result;
+}
+
+void PointerDaemon::apply_instruction_choice() {
+    tracker_->set_instructions(instruction_trial_.chosen());
+    const bool forced = config::forced_instruction_set(parts_.config.instructions).has_value();
+    instructions_text_ = describe_trial(instruction_trial_, forced);
+    log::info("instruction sets: " + instructions_text_);
 }
 
 void PointerDaemon::on_lost(const std::string& reason) {
@@ -234,6 +280,8 @@ void PointerDaemon::reload() {
         parts_.config = fresh;
         tracker_ = std::make_unique<core::Tracker>(parts_.config.core);
         pointer_.reset();
+        // A new working size or edge source can change which sets are cheapest.
+        start_instruction_trial();
         log::info("configuration reloaded");
     } catch (const std::exception& e) {
         log::error(std::string("reload failed, keeping the running configuration: ") + e.what());
@@ -290,6 +338,12 @@ std::string PointerDaemon::status_text() const {
                           statistics_.cpu_percent());
     text += "frames: " + std::to_string(statistics_.frames()) + "\n";
     text += "camera losses: " + std::to_string(lost_count_) + "\n";
+    text += "instructions: " +
+            (instructions_text_.empty()
+                 ? "measuring (" + std::to_string(instruction_trial_.frames_recorded()) +
+                       " frames so far)"
+                 : instructions_text_) +
+            "\n";
     text += statistics_.cost_text(Clock::now());
     if (last_result_.has_position) {
         char position[96];

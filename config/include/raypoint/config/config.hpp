@@ -1,9 +1,11 @@
 #pragma once
 // The whole configuration of raypoint as plain data. The daemon's settings join the core's here.
 
+#include <optional>
 #include <string>
 #include <string_view>
 
+#include "raypoint/core/instruction_set.hpp"
 #include "raypoint/core/settings.hpp"
 
 namespace raypoint::config {
@@ -20,10 +22,31 @@ struct CameraSettings {
     int min_height = 240;
 };
 
+// [tracking] instructions: the vector instructions of preprocessing's filter and edge stages.
+// automatic: measured while INITIALIZING (core::InstructionTrial); a named set: both stages,
+// clamped to what the CPU runs.
+enum class InstructionsSetting { automatic, scalar, sse2, avx2 };
+
 struct Config {
     core::Settings core;
     CameraSettings camera;
+    InstructionsSetting instructions = InstructionsSetting::automatic;
 };
+
+// The set `setting` names; none for automatic.
+inline std::optional<core::InstructionSet> forced_instruction_set(InstructionsSetting setting) {
+    switch (setting) {
+        case InstructionsSetting::automatic:
+            return std::nullopt;
+        case InstructionsSetting::scalar:
+            return core::InstructionSet::scalar;
+        case InstructionsSetting::sse2:
+            return core::InstructionSet::sse2;
+        case InstructionsSetting::avx2:
+            return core::InstructionSet::avx2;
+    }
+    return std::nullopt;
+}
 
 // Named starting points: "default" (measured defaults, docs/settings.md) and "paper"
 // (Quesada & León exactly). Returns false for an unknown name.

@@ -21,6 +21,10 @@ class EdgeStage {
     // other: three working heights; FilterStage::planes()). The other image is not read.
     void compute(const cv::Mat& grey, const cv::Mat& planes) noexcept;
 
+    // Takes effect from the next compute(); every set gives the same images.
+    void set_instructions(InstructionSet instructions) noexcept { instructions_ = instructions; }
+    InstructionSet instructions() const noexcept { return instructions_; }
+
     const cv::Mat& magnitude() const noexcept { return magnitude_; }  // CV_8U Sobel magnitude
     // CV_8U: the magnitude where it is over the edge threshold, 0 elsewhere.
     const cv::Mat& edges() const noexcept { return edges_; }

@@ -31,6 +31,11 @@ class FilterStage {
     // previous frame.
     bool apply(const FrameView& frame) noexcept;
 
+    // Takes effect from the next apply(); every set gives the same images, so it may change
+    // between any two frames.
+    void set_instructions(InstructionSet instructions) noexcept { instructions_ = instructions; }
+    InstructionSet instructions() const noexcept { return instructions_; }
+
     const cv::Mat& color() const noexcept { return color_[current_]; }  // CV_8UC3
     const cv::Mat& previous_color() const noexcept { return color_[1 - current_]; }
     const cv::Mat& gray() const noexcept { return gray_[current_]; }  // CV_8U

@@ -10,13 +10,15 @@
 #include "raypoint/core/instruction_set.hpp"
 #include "raypoint/core/poisson_disk.hpp"
 #include "raypoint/core/settings.hpp"
+#include "raypoint/core/stage_instructions.hpp"
 
 namespace raypoint::core {
 
 class Preprocessor {
   public:
-    explicit Preprocessor(const PreprocessSettings& settings,
-                          InstructionSet instructions = best_instruction_set());
+    explicit Preprocessor(
+        const PreprocessSettings& settings,
+        StageInstructions instructions = StageInstructions::both(best_instruction_set()));
 
     // Returns false for a frame the core cannot read (null data, odd YUYV width, stride too
     // small, smaller than the working size): the frame is skipped, nothing changes.
@@ -29,6 +31,13 @@ class Preprocessor {
     bool filter(const FrameView& frame) noexcept;
     void compute_edges() noexcept;
     void compute_difference() noexcept;
+
+    // The filter's and the edge stage's sets, from the next frame on. Every combination gives
+    // the same images, so they may change between any two frames (InstructionTrial).
+    void set_instructions(StageInstructions instructions) noexcept;
+    StageInstructions instructions() const noexcept {
+        return {filter_.instructions(), edges_.instructions()};
+    }
 
     const cv::Mat& color() const noexcept { return filter_.color(); }  // CV_8UC3
     const cv::Mat& previous_color() const noexcept { return filter_.previous_color(); }

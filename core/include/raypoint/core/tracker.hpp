@@ -12,6 +12,7 @@
 #include "raypoint/core/frame.hpp"
 #include "raypoint/core/preprocess.hpp"
 #include "raypoint/core/settings.hpp"
+#include "raypoint/core/stage_instructions.hpp"
 #include "raypoint/core/tracker_state.hpp"
 
 namespace raypoint::core {
@@ -45,9 +46,9 @@ struct TrackerImages {
 
 class Tracker {
   public:
-    // `instructions`: for benchmarks and tests; every set gives the same results.
-    explicit Tracker(const Settings& settings,
-                     InstructionSet instructions = best_instruction_set());
+    // `instructions`: each preprocessing stage's set; every combination gives the same results.
+    explicit Tracker(const Settings& settings, StageInstructions instructions =
+                                                   StageInstructions::both(best_instruction_set()));
     ~Tracker();
     Tracker(const Tracker&) = delete;
     Tracker& operator=(const Tracker&) = delete;
@@ -55,6 +56,11 @@ class Tracker {
     // Processes one frame. Never throws; does not allocate in steady state (same frame size).
     // Frames must come in timestamp order.
     FrameResult process(const FrameView& frame) noexcept;
+
+    // From the next frame on; safe between any two frames, the results being the same
+    // (the daemon measures them in turn while INITIALIZING, InstructionTrial).
+    void set_instructions(StageInstructions instructions) noexcept;
+    StageInstructions instructions() const noexcept;
 
     TrackerImages images() const noexcept;
     const Settings& settings() const noexcept;

@@ -15,6 +15,7 @@
 #include "raypoint/capture/frame_source.hpp"
 #include "raypoint/config/config.hpp"
 #include "raypoint/control/control_socket.hpp"
+#include "raypoint/core/instruction_trial.hpp"
 #include "raypoint/core/pointer_controller.hpp"
 #include "raypoint/core/tracker.hpp"
 #include "raypoint/loop/run_statistics.hpp"
@@ -59,6 +60,11 @@ class PointerDaemon {
     unsigned wait_for_events(int source_fd,
                              RunStatistics::Clock::time_point deadline) const noexcept;
     void on_frame(const Capture& capture);
+    // The instruction sets of a new tracker: measured over its first frames (INITIALIZING's,
+    // which it does nothing useful with) unless [tracking] instructions names one.
+    void start_instruction_trial();
+    core::FrameResult process_in_trial(const core::FrameView& frame) noexcept;
+    void apply_instruction_choice();
     void on_lost(const std::string& reason);
     bool handle_signals();  // false: stop
     void handle_control();
@@ -71,6 +77,8 @@ class PointerDaemon {
     DaemonParts parts_;
     std::unique_ptr<core::Tracker> tracker_;
     std::optional<core::PointerController> pointer_;  // made at the first frame (its aspect)
+    core::InstructionTrial instruction_trial_{core::InstructionSet::scalar};
+    std::string instructions_text_;  // the choice, for `ctl status`; empty while measuring
     SdNotifier notifier_;
     RunStatistics statistics_;
     int signal_fd_ = -1;
