@@ -1,5 +1,8 @@
 #pragma once
-// FrameEvidence answered from the preprocessed images of a real frame.
+// FrameEvidence answered from the preprocessed images of a real frame. The edge image is read
+// by estimate() alone (TRACKING and RECOVERING, paper 4.2), so it is computed there, on the
+// first estimate of a frame: INITIALIZING and SEARCHING frames, and the frame a search picks a
+// target on, never pay for the edge stage.
 
 #include "raypoint/core/preprocess.hpp"
 #include "raypoint/core/state_machine.hpp"
@@ -8,13 +11,14 @@ namespace raypoint::core::detail {
 
 class ImageEvidence final : public FrameEvidence {
   public:
-    ImageEvidence(const Preprocessor& images, Estimator& estimator,
+    ImageEvidence(Preprocessor& images, Estimator& estimator,
                   const TrackingSettings& settings) noexcept
         : images_(images), estimator_(estimator), settings_(settings) {}
 
     double movement() const noexcept override { return images_.movement(); }
     std::optional<cv::Point2f> detect() noexcept override;
     Estimate estimate(cv::Point2f inner) noexcept override {
+        images_.ensure_edges();
         return estimator_.estimate(images_.edges(), inner);
     }
     cv::Vec3f current_color(cv::Point2f at) const noexcept override {
@@ -27,7 +31,7 @@ class ImageEvidence final : public FrameEvidence {
   private:
     cv::Vec3f patch_mean(const cv::Mat& color, cv::Point2f at) const noexcept;
 
-    const Preprocessor& images_;
+    Preprocessor& images_;
     Estimator& estimator_;
     const TrackingSettings& settings_;
 };

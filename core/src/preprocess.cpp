@@ -14,19 +14,23 @@ void Preprocessor::set_instructions(StageInstructions instructions) noexcept {
     edges_.set_instructions(instructions.edges);
 }
 
-bool Preprocessor::process(const FrameView& frame) noexcept {
+bool Preprocessor::process(const FrameView& frame, Edges edges) noexcept {
     if (!filter(frame)) return false;
-    compute_edges();
+    if (edges == Edges::computed) compute_edges();
     compute_difference();
     return true;
 }
 
+// A frame that is not read leaves every image as it was, the edges' currency included.
 bool Preprocessor::filter(const FrameView& frame) noexcept {
-    return filter_.apply(frame);
+    if (!filter_.apply(frame)) return false;
+    edges_current_ = false;
+    return true;
 }
 
 void Preprocessor::compute_edges() noexcept {
     edges_.compute(filter_.gray(), filter_.planes());
+    edges_current_ = true;
 }
 
 // The first frame of a geometry has nothing to compare with: no difference, no movement.

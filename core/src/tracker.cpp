@@ -41,11 +41,22 @@ StageInstructions Tracker::instructions() const noexcept {
     return impl_->preprocessor.instructions();
 }
 
+void Tracker::ensure_edges() noexcept {
+    impl_->preprocessor.ensure_edges();
+}
+
+bool Tracker::edges_computed() const noexcept {
+    return impl_->preprocessor.edges_current();
+}
+
 const Settings& Tracker::settings() const noexcept {
     return impl_->settings;
 }
 
+// The edge stage is deferred to the state machine's first estimate (ImageEvidence); a caller
+// drawing the images gets the last frame's edges all the same, computed here if it had none.
 TrackerImages Tracker::images() const noexcept {
+    impl_->preprocessor.ensure_edges();
     return {impl_->preprocessor.color(), impl_->preprocessor.magnitude(),
             impl_->preprocessor.difference(), impl_->estimator->trace()};
 }
@@ -55,7 +66,7 @@ FrameResult Tracker::process(const FrameView& frame) noexcept {
     FrameResult result;
     result.frame = d.frames++;
     result.timestamp = frame.timestamp;
-    if (!d.preprocessor.process(frame)) {
+    if (!d.preprocessor.process(frame, Preprocessor::Edges::deferred)) {
         result.state = d.machine.state();
         return result;
     }

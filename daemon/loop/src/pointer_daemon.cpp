@@ -211,10 +211,13 @@ void PointerDaemon::start_instruction_trial() {
     }
 }
 
-// Only tracker.process is timed: capture and the sink are the same whatever the sets.
+// Only tracker.process is timed: capture and the sink are the same whatever the sets. The
+// trial runs while INITIALIZING, whose frames skip the edge stage: it is run here so that the
+// edge sets are measured too.
 core::FrameResult PointerDaemon::process_in_trial(const core::FrameView& frame) noexcept {
     const auto begin = Clock::now();
     const core::FrameResult result = tracker_->process(frame);
+    tracker_->ensure_edges();
     instruction_trial_.record(
         std::chrono::duration<double, std::micro>(Clock::now() - begin).count());
     if (instruction_trial_.done()) {

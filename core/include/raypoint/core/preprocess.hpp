@@ -22,7 +22,10 @@ class Preprocessor {
 
     // Returns false for a frame the core cannot read (null data, odd YUYV width, stride too
     // small, smaller than the working size): the frame is skipped, nothing changes.
-    bool process(const FrameView& frame) noexcept;
+    // Edges::deferred leaves the edge stage out until ensure_edges(): the Tracker's choice, as
+    // only estimation (TRACKING, RECOVERING) reads the edge image, so an idle tracker skips it.
+    enum class Edges { computed, deferred };
+    bool process(const FrameView& frame, Edges edges = Edges::computed) noexcept;
 
     // process() is these three stages in order; they are public for the per-stage benchmarks
     // (core/perf) and do nothing else apart. filter() takes the frame as above (Poisson-disk
@@ -31,6 +34,14 @@ class Preprocessor {
     bool filter(const FrameView& frame) noexcept;
     void compute_edges() noexcept;
     void compute_difference() noexcept;
+
+    // Runs the edge stage on the last filtered frame unless it already has: magnitude() and
+    // edges() are then that frame's. edges_current() is false from a filtered frame until its
+    // edges are computed (the images then still hold an older frame's, or zeros).
+    void ensure_edges() noexcept {
+        if (!edges_current_) compute_edges();
+    }
+    bool edges_current() const noexcept { return edges_current_; }
 
     // The filter's and the edge stage's sets, from the next frame on. Every combination gives
     // the same images, so they may change between any two frames (InstructionTrial).
@@ -42,6 +53,7 @@ class Preprocessor {
     const cv::Mat& color() const noexcept { return filter_.color(); }  // CV_8UC3
     const cv::Mat& previous_color() const noexcept { return filter_.previous_color(); }
     const cv::Mat& gray() const noexcept { return filter_.gray(); }  // CV_8U
+    // The edge images are the last filtered frame's only when edges_current().
     const cv::Mat& magnitude() const noexcept { return edges_.magnitude(); }
     // CV_8U: the magnitude where it is over the edge threshold, 0 elsewhere.
     const cv::Mat& edges() const noexcept { return edges_.edges(); }
@@ -58,6 +70,7 @@ class Preprocessor {
     FilterStage filter_;
     EdgeStage edges_;
     DifferenceStage difference_;
+    bool edges_current_ = false;
 };
 
 }  // namespace raypoint::core

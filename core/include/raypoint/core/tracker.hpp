@@ -62,7 +62,16 @@ class Tracker {
     void set_instructions(StageInstructions instructions) noexcept;
     StageInstructions instructions() const noexcept;
 
+    // The last processed frame's images. process() runs the edge stage only when the frame's
+    // state machine step estimates (TRACKING, RECOVERING), so an idle tracker skips it; this
+    // computes the edge image for any other frame (an edge stage's cost, results unchanged).
     TrackerImages images() const noexcept;
+    // The same without the images: what the instruction trial times after process(), so
+    // every candidate's edge set is measured on idle frames too.
+    void ensure_edges() noexcept;
+    // Whether the last processed frame's edge image has been computed (by its state machine
+    // step, ensure_edges() or images()): false on INITIALIZING and SEARCHING frames.
+    bool edges_computed() const noexcept;
     const Settings& settings() const noexcept;
 
   private:
