@@ -2,11 +2,14 @@
 // tracked target: every input size and format, each instruction set at 640x480, and the
 // estimator's n, y, m around the defaults at 640x480 BGR (target: <= 150 us at 640x480,
 // docs/performance.md); and every combination of the filter's and the edges' sets at 640x480
-// (what InstructionTrial chooses from).
+// (what InstructionTrial chooses from). BM_TrackerIdle: the same at 640x480 with nobody in
+// view, the tracker SEARCHING (what a daemon costs while idle).
 
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "bench_frames.hpp"
 #include "raypoint/core/tracker.hpp"
@@ -100,10 +103,49 @@ void BM_TrackerStageSets(benchmark::State& state) {
         core::EstimatorSettings{});
 }
 
+// A still scene: the clip's first frame, copied into clip_frames buffers played in turn (one
+// buffer fed again and again would stay cached, unlike a camera's) and stamped at 30 fps. No
+// movement, so the tracker stays SEARCHING and skips the edge stage. Arguments: 0 = BGR,
+// 1 = YUYV; `edges` 1 runs the edge stage on every frame all the same
+// (Tracker::ensure_edges()), as the tracker did on every frame before it was deferred.
+void BM_TrackerIdle(benchmark::State& state) {
+    const bool edges = state.range(1) != 0;
+    const Clip clip({640, 480}, format_argument(state.range(0)), 1);
+    const core::FrameView first = clip.view(0);
+    std::vector<cv::Mat> copies;
+    copies.reserve(clip_frames);
+    for (int i = 0; i < clip_frames; ++i) {
+        copies.push_back(
+            cv::Mat(first.height, first.stride, CV_8U, const_cast<std::uint8_t*>(first.data))
+                .clone());
+    }
+    core::Settings settings;
+    settings.tracking.startup_seconds = 0.0;
+    core::Tracker tracker(settings);
+    core::FrameView frame = first;
+    long index = 0;
+    long searching = 0;
+    for (auto _ : state) {
+        frame.data = copies[static_cast<std::size_t>(index % clip_frames)].data;
+        frame.timestamp = ++index * 33'333;
+        const core::FrameResult result = tracker.process(frame);
+        if (edges) tracker.ensure_edges();
+        searching += result.state == core::TrackerState::searching ? 1 : 0;
+        benchmark::DoNotOptimize(result);
+    }
+    state.SetLabel(std::string(format_name(frame.format)) + " " +
+                   std::string(core::to_string(tracker.instructions().filter)));
+    state.counters["searching"] =
+        static_cast<double>(searching) / static_cast<double>(state.iterations());
+    state.counters["fps"] =
+        benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
 }  // namespace
 
 BENCHMARK(BM_Tracker)->Apply(tracker_arguments);
 BENCHMARK(BM_TrackerStageSets)->Apply(stage_set_arguments);
+BENCHMARK(BM_TrackerIdle)->ArgNames({"yuyv", "edges"})->ArgsProduct({{0, 1}, {0, 1}});
 
 }  // namespace raypoint::bench
 
