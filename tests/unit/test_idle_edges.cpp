@@ -89,7 +89,9 @@ TEST(IdleEdges, SearchingSkipsTheEdgeStageAndTrackingResultsAreUnchanged) {
             ASSERT_EQ(got.centroid, fraction(want.estimate.centroid));
             ASSERT_EQ(got.inner, fraction(want.estimate.inner));
         }
-        if (want.area_known) ASSERT_EQ(*got.area, want.estimate.area / (160.0 * 120.0));
+        if (want.area_known) {
+            ASSERT_EQ(*got.area, want.estimate.area / (160.0 * 120.0));
+        }
 
         // Only a step that started in TRACKING estimates; the frame a search picks a target
         // on (SEARCHING -> TRACKING inside one step) does not.
