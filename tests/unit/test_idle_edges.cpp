@@ -39,12 +39,15 @@ cv::Mat frame_image(int frame) {
 }
 
 // Tracker::process's parts with the edge stage on every frame.
+// It keeps its own copy of the settings: ImageEvidence holds a reference to them.
 struct Reference {
     explicit Reference(const Settings& s)
-        : preprocessor(s.preprocess),
-          estimator(make_estimator(s.estimator)),
-          machine(s.tracking, cv::Size(s.preprocess.work_width, s.preprocess.work_height)),
-          evidence(preprocessor, *estimator, s.tracking) {}
+        : settings(s),
+          preprocessor(settings.preprocess),
+          estimator(make_estimator(settings.estimator)),
+          machine(settings.tracking,
+                  cv::Size(settings.preprocess.work_width, settings.preprocess.work_height)),
+          evidence(preprocessor, *estimator, settings.tracking) {}
 
     StepResult step(const FrameView& frame) {
         EXPECT_TRUE(preprocessor.process(frame, Preprocessor::Edges::computed));
@@ -52,6 +55,7 @@ struct Reference {
         return machine.step(frame.timestamp, evidence);
     }
 
+    Settings settings;
     Preprocessor preprocessor;
     std::unique_ptr<Estimator> estimator;
     StateMachine machine;
