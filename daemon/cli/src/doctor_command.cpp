@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -156,16 +155,8 @@ std::string measure_instructions(const core::Settings& settings, FrameAt frame_a
     core::InstructionTrial trial(
         best, std::nullopt,
         core::InstructionTrial::max_candidates * core::InstructionTrial::max_samples);
-    for (int i = 0; !trial.done(); ++i) {
-        tracker.set_instructions(trial.next_candidate());
-        const core::FrameView frame = frame_at(i, i * core::Timestamp{33'333});  // 30 fps
-        const auto begin = std::chrono::steady_clock::now();
-        tracker.process(frame);
-        tracker.ensure_edges();  // INITIALIZING skips the edge stage; the trial measures it
-        trial.record(
-            std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - begin)
-                .count());
-    }
+    for (int i = 0; !trial.done(); ++i)
+        process_in_trial(tracker, trial, frame_at(i, i * core::Timestamp{33'333}));  // 30 fps
     double chosen_us = 0.0;
     double widest_us = 0.0;
     for (int i = 0; i < trial.candidate_count(); ++i) {

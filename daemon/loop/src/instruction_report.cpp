@@ -1,8 +1,20 @@
 #include "raypoint/loop/instruction_report.hpp"
 
+#include <chrono>
 #include <cmath>
 
 namespace raypoint::daemon {
+
+core::FrameResult process_in_trial(core::Tracker& tracker, core::InstructionTrial& trial,
+                                   const core::FrameView& frame) noexcept {
+    tracker.set_instructions(trial.next_candidate());
+    const auto begin = std::chrono::steady_clock::now();
+    const core::FrameResult result = tracker.process(frame);
+    tracker.ensure_edges();
+    trial.record(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - begin)
+                     .count());
+    return result;
+}
 
 std::string describe_instructions(core::StageInstructions instructions) {
     return "filter " + std::string(core::to_string(instructions.filter)) + ", edges " +

@@ -204,22 +204,11 @@ void PointerDaemon::start_instruction_trial() {
     }
     instruction_trial_ = core::InstructionTrial(best, forced);
     instructions_text_.clear();
-    if (instruction_trial_.done()) {
-        apply_instruction_choice();
-    } else {
-        tracker_->set_instructions(instruction_trial_.next_candidate());
-    }
+    if (instruction_trial_.done()) apply_instruction_choice();
 }
 
-// Only tracker.process is timed: capture and the sink are the same whatever the sets. The
-// trial runs while INITIALIZING, whose frames skip the edge stage: it is run here so that the
-// edge sets are measured too.
 core::FrameResult PointerDaemon::process_in_trial(const core::FrameView& frame) noexcept {
-    const auto begin = Clock::now();
-    const core::FrameResult result = tracker_->process(frame);
-    tracker_->ensure_edges();
-    instruction_trial_.record(
-        std::chrono::duration<double, std::micro>(Clock::now() - begin).count());
+    const core::FrameResult result = daemon::process_in_trial(*tracker_, instruction_trial_, frame);
     if (instruction_trial_.done()) {
         // Once per trial; logging allocates, which the steady state never reaches.
         try {
@@ -227,8 +216,6 @@ core::FrameResult PointerDaemon::process_in_trial(const core::FrameView& frame) 
         } catch (...) {
             tracker_->set_instructions(instruction_trial_.chosen());
         }
-    } else {
-        tracker_->set_instructions(instruction_trial_.next_candidate());
     }
     return result;
 }

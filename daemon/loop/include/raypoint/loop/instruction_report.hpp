@@ -5,8 +5,16 @@
 #include <string>
 
 #include "raypoint/core/instruction_trial.hpp"
+#include "raypoint/core/tracker.hpp"
 
 namespace raypoint::daemon {
+
+// One frame of a trial: processed with the trial's next candidate, its cost measured on the
+// steady clock and recorded. Only tracker.process is timed (capture and output cost the same
+// whatever the sets), and the edge stage with it: the trial runs while INITIALIZING, whose frames
+// otherwise skip edges, and the edge sets must be measured too. Allocates nothing.
+core::FrameResult process_in_trial(core::Tracker& tracker, core::InstructionTrial& trial,
+                                   const core::FrameView& frame) noexcept;
 
 // "filter sse2, edges avx2"
 std::string describe_instructions(core::StageInstructions instructions);
