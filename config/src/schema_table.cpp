@@ -85,6 +85,14 @@ const std::vector<Key>& schema() {
             "estimator", "fill_limit", 1.0, 100.0,
             "refined: a fill this many times the blocks' area has leaked and is redone",
             [](auto& c) -> auto& { return c.core.estimator.fill_limit; }),
+        real_key(
+            "estimator", "extremity", 0.0, 1.0,
+            "refined: a region crossing the border keeps its part beyond this share of its reach",
+            [](auto& c) -> auto& { return c.core.estimator.extremity; }),
+        integer_key(
+            "estimator", "extremity_contact", 1, 1000,
+            "refined: border pixels from which a region counts as crossing the border",
+            [](auto& c) -> auto& { return c.core.estimator.extremity_contact; }),
         // [tracking] paper 4.2
         real_key(
             "tracking", "startup_seconds", 0.0, 30.0,
@@ -128,6 +136,18 @@ const std::vector<Key>& schema() {
             "tracking", "color_tolerance", 0, 765,
             "colours match when the sum of channel differences is at most this",
             [](auto& c) -> auto& { return c.core.tracking.color_tolerance; }),
+        real_key(
+            "tracking", "abandon_seconds", 0.0, 60.0,
+            "drop a target that stays still this long while the scene moves elsewhere (0: never)",
+            [](auto& c) -> auto& { return c.core.tracking.abandon_seconds; }),
+        real_key(
+            "tracking", "abandon_share", 0.0, 1.0,
+            "a target is still when less than this share of the movement is around it",
+            [](auto& c) -> auto& { return c.core.tracking.abandon_share; }),
+        real_key(
+            "tracking", "extremity_motion", 0.0, 1.0,
+            "a region's far end is the target when this share of the movement is around it",
+            [](auto& c) -> auto& { return c.core.tracking.extremity_motion; }),
         integer_key(
             "tracking", "recovery_near", 1, 200, "near recovery offset, working pixels",
             [](auto& c) -> auto& { return c.core.tracking.recovery_near; }),

@@ -68,6 +68,7 @@ class RecordedEvidence final : public core::FrameEvidence {
     RecordedEvidence(const core::Estimate& estimate, cv::Vec3f colour)
         : estimate_(estimate), colour_(colour) {}
     double movement() const noexcept override { return 20'000.0; }
+    double movement_near(cv::Point2f, float) const noexcept override { return 20'000.0; }
     std::optional<cv::Point2f> detect() noexcept override { return estimate_.inner; }
     core::Estimate estimate(cv::Point2f) noexcept override { return estimate_; }
     cv::Vec3f current_color(cv::Point2f) const noexcept override { return colour_; }

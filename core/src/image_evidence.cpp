@@ -1,6 +1,7 @@
 #include "image_evidence.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace raypoint::core::detail {
 
@@ -35,6 +36,38 @@ std::optional<cv::Point2f> ImageEvidence::detect() noexcept {
     }
     if (sum <= 0.0) return std::nullopt;
     return cv::Point2f(static_cast<float>(sum_x / sum), static_cast<float>(sum_y / sum));
+}
+
+// The far end of a region crossing the border (EstimatorSettings::extremity) is the target when
+// the scene's movement is there (a hand waving at the end of its sleeve); a still end is
+// background the region leaked into (a door beside a ball), and the whole region stays.
+Estimate ImageEvidence::estimate(cv::Point2f inner) noexcept {
+    images_.ensure_edges();
+    Estimate estimate = estimator_.estimate(images_.edges(), inner);
+    if (estimate.crosses_border) {
+        if (movement_near(estimate.end_centroid, motion_radius(estimate.end_area)) >=
+            settings_.extremity_motion * images_.movement()) {
+            estimate.centroid = estimate.end_centroid;
+            estimate.area = estimate.end_area;
+            estimate.inner = estimate.end_inner;
+        }
+    }
+    return estimate;
+}
+
+double ImageEvidence::movement_near(cv::Point2f centre, float radius) const noexcept {
+    const cv::Mat& difference = images_.difference();
+    const int x0 = std::max(0, cvFloor(centre.x - radius));
+    const int y0 = std::max(0, cvFloor(centre.y - radius));
+    const int x1 = std::min(difference.cols - 1, cvCeil(centre.x + radius));
+    const int y1 = std::min(difference.rows - 1, cvCeil(centre.y + radius));
+    double sum = 0.0;
+    for (int y = y0; y <= y1; ++y) {
+        const auto* row = difference.ptr<std::uint8_t>(y);
+        for (int x = x0; x <= x1; ++x)
+            sum += row[x];
+    }
+    return sum;
 }
 
 // The patch is clipped to the image, so a point near the border still gets a colour.

@@ -16,11 +16,9 @@ class ImageEvidence final : public FrameEvidence {
         : images_(images), estimator_(estimator), settings_(settings) {}
 
     double movement() const noexcept override { return images_.movement(); }
+    double movement_near(cv::Point2f centre, float radius) const noexcept override;
     std::optional<cv::Point2f> detect() noexcept override;
-    Estimate estimate(cv::Point2f inner) noexcept override {
-        images_.ensure_edges();
-        return estimator_.estimate(images_.edges(), inner);
-    }
+    Estimate estimate(cv::Point2f inner) noexcept override;
     cv::Vec3f current_color(cv::Point2f at) const noexcept override {
         return patch_mean(images_.color(), at);
     }

@@ -32,6 +32,8 @@ class RasterEstimator final : public RayEstimatorBase {
                static_cast<unsigned>(pixel.y) < static_cast<unsigned>(height_);
     }
     void add_edge_band(const cv::Mat& edges, double& area, double& sum_x, double& sum_y) noexcept;
+    // EstimatorSettings::extremity: a region that crosses the image border keeps its far end.
+    void keep_extremity(Estimate& estimate, std::size_t inside_count) const noexcept;
 
     // filled_ values: 0 not reached, inside, or band + depth into the edge band.
     static constexpr unsigned char inside = 1;

@@ -1,5 +1,6 @@
 #include "raypoint/core/state_machine.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -43,6 +44,8 @@ std::string_view to_string(LossReason reason) noexcept {
             return "no-recovery-point";
         case LossReason::recovery_failed:
             return "recovery-failed";
+        case LossReason::elsewhere:
+            return "elsewhere";
     }
     return "?";
 }
@@ -127,6 +130,10 @@ bool StateMachine::on_tracking() noexcept {
     }
     candidate_ = evidence_->estimate(inner_);
     result_.iterations += candidate_.iterations;
+    if (moving_elsewhere(candidate_)) {
+        drop_target(LossReason::elsewhere);
+        return true;
+    }
     if (const LossReason reason = area_check(candidate_.area); reason != LossReason::none) {
         drop_target(reason);
         return true;
@@ -211,10 +218,28 @@ bool StateMachine::still_too_long() const noexcept {
     return still_since_ && now_ - *still_since_ >= seconds_to_us(settings_.idle_seconds);
 }
 
+// A search threshold's worth of movement, hardly any of it on the target: the target is a still
+// part of the scene the tracker locked on (a body, a sleeve, a shelf), and the hand is elsewhere.
+bool StateMachine::moving_elsewhere(const Estimate& estimate) noexcept {
+    const double movement = evidence_->movement();
+    if (settings_.abandon_seconds <= 0.0 || movement <= search_threshold_) {
+        elsewhere_since_.reset();
+        return false;
+    }
+    if (evidence_->movement_near(estimate.centroid, motion_radius(estimate.area)) >=
+        settings_.abandon_share * movement) {
+        elsewhere_since_.reset();
+        return false;
+    }
+    if (!elsewhere_since_) elsewhere_since_ = now_;
+    return now_ - *elsewhere_since_ >= seconds_to_us(settings_.abandon_seconds);
+}
+
 void StateMachine::drop_target(LossReason reason) noexcept {
     state_ = TrackerState::searching;
     result_.loss = reason;
     still_since_.reset();
+    elsewhere_since_.reset();
     result_.has_target = false;
     result_.lost = true;
 }

@@ -22,6 +22,7 @@ class PreprocessorEvidence final : public FrameEvidence {
         : images_(images), estimator_(make_estimator(EstimatorSettings{})) {}
 
     double movement() const noexcept override { return images_.movement(); }
+    double movement_near(cv::Point2f, float) const noexcept override { return images_.movement(); }
     std::optional<cv::Point2f> detect() noexcept override {
         const cv::Moments m = cv::moments(images_.difference());
         if (m.m00 <= 0.0) return std::nullopt;

@@ -17,6 +17,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 #include "frames.hpp"
 #include "raypoint/core/estimator.hpp"
@@ -124,6 +125,50 @@ TEST(RasterBlocks, PaperAreaIsWholeBlocks) {
     EXPECT_GE(e.area, disk.area);
     EXPECT_LE(e.area, 1.4 * disk.area);
     EXPECT_LE(centroid_error(e, disk.centroid), 1.0);
+}
+
+// A ball held up on an arm that comes in over the bottom border: one region without an edge
+// between them (the rays run down the arm), 160x120 with a 2 px outline.
+cv::Mat arm_and_ball() {
+    cv::Mat mask(120, 160, CV_8U, cv::Scalar(0));
+    cv::rectangle(mask, cv::Rect(70, 50, 21, 70), cv::Scalar(255), cv::FILLED);
+    cv::circle(mask, {80, 35}, 18, cv::Scalar(255), cv::FILLED);
+    cv::Mat eroded;
+    cv::erode(mask, eroded, cv::getStructuringElement(cv::MORPH_RECT, {5, 5}));
+    return mask - eroded;  // the outline, 2 px inside; none along the image border
+}
+
+TEST(RasterExtremity, ARegionOverTheBorderHasItsFarEnd) {
+    const cv::Mat edges = arm_and_ball();
+    EstimatorSettings settings;
+    settings.extremity = 0.5;
+    settings.extremity_contact = 16;
+    const Estimate e = make_estimator(settings)->estimate(edges, {80, 70});
+    ASSERT_TRUE(e.crosses_border);
+    // The whole region's centroid is down the arm. The far end (beyond half the 102 px from the
+    // crossing at y = 119 to the ball's top at 17: y < 68) is the ball and the arm's top 18 px:
+    // its centroid and inner point are on the ball, above where the arm joins it (y = 50).
+    EXPECT_GT(e.centroid.y, 55.0F);
+    EXPECT_LT(e.end_centroid.y, 50.0F);
+    EXPECT_LT(std::hypot(e.end_centroid.x - 80.0F, e.end_centroid.y - 35.0F), 10.0F);
+    EXPECT_LT(std::hypot(e.end_inner.x - 80.0F, e.end_inner.y - 35.0F), 10.0F);
+    EXPECT_EQ(edges.at<std::uint8_t>(cvRound(e.end_inner.y), cvRound(e.end_inner.x)), 0);
+    EXPECT_GT(e.end_area, 0.3 * e.area);
+    EXPECT_LT(e.end_area, 0.8 * e.area);
+
+    settings.extremity_contact = 22;  // the arm is 21 px wide where it crosses
+    EXPECT_FALSE(make_estimator(settings)->estimate(edges, {80, 70}).crosses_border);
+    settings.extremity = 0.0;  // off: the paper's whole region
+    settings.extremity_contact = 16;
+    EXPECT_FALSE(make_estimator(settings)->estimate(edges, {80, 70}).crosses_border);
+}
+
+TEST(RasterExtremity, ARegionInsideThePictureIsWhole) {
+    const test::Shape disk = test::disk();
+    EstimatorSettings settings;
+    settings.extremity = 0.5;
+    settings.extremity_contact = 1;
+    EXPECT_FALSE(make_estimator(settings)->estimate(disk.edges, {70, 55}).crosses_border);
 }
 
 TEST(Hand, RasterFromThePalmAndEveryFingertip) {

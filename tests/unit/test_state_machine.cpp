@@ -146,6 +146,41 @@ TEST(StateMachine, StillTargetIsDroppedAfterIdleSeconds) {
     EXPECT_TRUE(played.estimated_at[12].empty());
 }
 
+TEST(StateMachine, TargetIsDroppedWhenTheMovementStaysElsewhere) {
+    // abandon_seconds 0.3 at 10 fps, share 0.1: from 0.3 s, 60,000 of movement with 5,000 of it
+    // around the target. A frame at the share (6,000, not below) or with the whole under the
+    // search threshold restarts the clock; the fourth frame away, at 0.3 s, drops the target
+    // after estimating (the estimate says where the target is).
+    TrackingSettings s = paper(2.0, true);
+    s.abandon_seconds = 0.3;
+    StateMachine machine(s, paper_size);
+    // clang-format off
+    play(machine, {
+        {0.0,  0,     none, {},             {skin, {}}, St::searching},
+        {0.1,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+        {0.2,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 6000},   // at the share
+        {0.3,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},   // away from here
+        {0.4,  57600, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 0},      // not over: reset
+        {0.5,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},   // away from here
+        {0.6,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {0.7,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {0.8,  60000, none, {est(P, 1000)}, {skin, {}}, St::searching, Ev::elsewhere, 5000},
+        {0.9,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+    });
+    // clang-format on
+}
+
+TEST(StateMachine, TargetIsNeverAbandonedInThePaperPreset) {
+    StateMachine machine(paper(2.0, false), paper_size);
+    std::vector<Row> rows{{0.0, 0, none, {}, {skin, {}}, St::searching},
+                          {0.1, 60000, P, {}, {skin, {}}, St::tracking, Ev::acquired}};
+    for (int i = 2; i < 20; ++i) {
+        rows.push_back(
+            {i / 10.0, 60000, none, {est(P, 1000)}, {skin, {}}, St::tracking, Ev::none, 0.0});
+    }
+    play(machine, rows);
+}
+
 TEST(StateMachine, KeptStillTargetStaysWhileItsColourMatches) {
     StateMachine machine(paper(0.5, true), paper_size);
     // clang-format off
@@ -299,6 +334,7 @@ TEST(StateMachine, NamesOfStatesAndLossReasons) {
     EXPECT_EQ(to_string(LossReason::left), "left");
     EXPECT_EQ(to_string(LossReason::no_recovery_point), "no-recovery-point");
     EXPECT_EQ(to_string(LossReason::recovery_failed), "recovery-failed");
+    EXPECT_EQ(to_string(LossReason::elsewhere), "elsewhere");
 }
 
 TEST(StateMachine, ColorDistanceIsTheSumOfChannelDifferences) {

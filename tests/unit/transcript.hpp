@@ -31,7 +31,18 @@ struct Paint {
 };
 
 // What the frame did besides its state.
-enum class Event { none, acquired, recovered, too_small, too_large, still, left, no_point, failed };
+enum class Event {
+    none,
+    acquired,
+    recovered,
+    too_small,
+    too_large,
+    still,
+    left,
+    no_point,
+    failed,
+    elsewhere
+};
 
 struct Row {
     double seconds;
@@ -41,6 +52,8 @@ struct Row {
     Paint paint;                      // this frame; previous_color() reads the previous row's
     TrackerState state;               // expected after the frame
     Event event = Event::none;
+    // movement_near()'s answer around any point; unset: all the movement is there.
+    std::optional<double> near = std::nullopt;
 };
 
 // Records every question the state machine asks.
@@ -53,6 +66,9 @@ class Script final : public core::FrameEvidence {
     mutable std::vector<cv::Point2f> painted_at;
 
     double movement() const noexcept override { return row->movement; }
+    double movement_near(cv::Point2f, float) const noexcept override {
+        return row->near.value_or(row->movement);
+    }
     std::optional<cv::Point2f> detect() noexcept override { return row->detect; }
     Estimate estimate(cv::Point2f inner) noexcept override {
         estimated_at.push_back(inner);
@@ -95,6 +111,8 @@ inline Event event_of(const core::StepResult& r) {
             return Event::no_point;
         case LossReason::recovery_failed:
             return Event::failed;
+        case LossReason::elsewhere:
+            return Event::elsewhere;
     }
     return Event::none;
 }

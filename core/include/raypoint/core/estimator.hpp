@@ -21,6 +21,13 @@ struct Estimate {
     double area = 0.0;  // square working pixels
     cv::Point2f inner;  // the relocated inner point
     int iterations = 0;
+    // EstimatorSettings::extremity: the region crosses the image border, and this is its far
+    // end (centroid, area, and the inner point nearest that centroid). Whether it replaces the
+    // whole is the caller's choice: the far end is the target when it moves (ImageEvidence).
+    bool crosses_border = false;
+    cv::Point2f end_centroid{};
+    double end_area = 0.0;
+    cv::Point2f end_inner{};
 };
 
 // One cast ray, kept for drawing (--annotate) and for tests.

@@ -65,6 +65,14 @@ struct EstimatorSettings {
     // AreaMode::refined: a fill larger than this times the selected blocks' area has leaked
     // through a gap in the outline and is redone within the selected blocks.
     double fill_limit = 1.5;
+    // AreaMode::refined: a region with at least extremity_contact pixels on the image border is
+    // an arm or a body coming in from outside the picture; its part beyond this share of the
+    // farthest pixel's distance from the border crossing is its far end, the target when it
+    // moves (TrackingSettings::extremity_motion). 0 = the whole region, as in the paper, and the
+    // default: 0.5 takes the rendered hd60 hand from its sleeve (0% to 100% tracked) but moves
+    // a ball onto a door it leaked into in another clip (100% to 37%, docs/accuracy.md).
+    double extremity = 0.0;
+    int extremity_contact = 16;
 };
 
 struct TrackingSettings {
@@ -86,7 +94,17 @@ struct TrackingSettings {
     double strong_fraction = 0.5;  // for SearchWeighting::strong: share of the maximum
     int color_patch = 5;           // side of the colour-match square, working pixels
     int color_tolerance = 90;      // sum of |channel difference| of the patch means
-    int recovery_near = 10;        // recovery offsets, working pixels
+    // A tracked target around which less than abandon_share of the movement happens, while the
+    // whole is over the search threshold, for abandon_seconds is dropped and searched anew: the
+    // tracker holds a still part of the scene while the hand moves elsewhere. 0 s = never, as in
+    // the paper. 0.3 s: rendered hands that lost their target to a shelf went from 15% and 8%
+    // tracked to 68% and 63%, no clip lost a frame; 1 s changed nothing (docs/accuracy.md).
+    double abandon_seconds = 0.3;
+    double abandon_share = 0.1;
+    // The far end of a region crossing the border (EstimatorSettings::extremity) becomes the
+    // estimate when at least this share of the movement is around it (0.3 lost hd60's hand).
+    double extremity_motion = 0.1;
+    int recovery_near = 10;  // recovery offsets, working pixels
     int recovery_far = 20;
 };
 

@@ -3,6 +3,7 @@
 // through FrameEvidence, so transcript tests drive it with scripted features and the Tracker
 // with real images; docs/state-machine.md is its diagram and must change with it.
 
+#include <cmath>
 #include <optional>
 
 #include <opencv2/core.hpp>
@@ -14,12 +15,21 @@
 
 namespace raypoint::core {
 
+// Half the side of the square around a region of `area` square working pixels that holds the
+// movement it makes: the region's own square and 2 pixels more, as a moving target's difference
+// lies along its outline, inside and out.
+inline float motion_radius(double area) noexcept {
+    return static_cast<float>(0.75 * std::sqrt(area) + 2.0);
+}
+
 // What the state machine may ask of the current frame. Points are in working pixels.
 class FrameEvidence {
   public:
     virtual ~FrameEvidence() = default;
     // Global inter-frame movement, summed over the working pixels.
     virtual double movement() const noexcept = 0;
+    // The same sum over the square of half-side `radius` around `centre`, clipped to the image.
+    virtual double movement_near(cv::Point2f centre, float radius) const noexcept = 0;
     // SEARCHING: the centre of mass of the difference image, if it has any mass.
     virtual std::optional<cv::Point2f> detect() noexcept = 0;
     virtual Estimate estimate(cv::Point2f inner) noexcept = 0;
@@ -62,6 +72,8 @@ class StateMachine {
 
     LossReason area_check(double area) const noexcept;
     bool still_too_long() const noexcept;
+    // Whether the movement has been away from the target for abandon_seconds.
+    bool moving_elsewhere(const Estimate& estimate) noexcept;
     void drop_target(LossReason reason) noexcept;
     void accept(const Estimate& estimate) noexcept;
 
@@ -74,9 +86,10 @@ class StateMachine {
     TrackerState state_ = TrackerState::initializing;
     std::optional<Timestamp> started_at_;
     std::optional<Timestamp> still_since_;
-    cv::Point2f inner_;          // the inner point after the previous frame
-    Estimate candidate_;         // TRACKING's estimate, waiting for VALIDATING
-    cv::Vec3f reference_color_;  // the target's colour the last time it moved
+    std::optional<Timestamp> elsewhere_since_;  // the target still, the scene's motion not
+    cv::Point2f inner_;                         // the inner point after the previous frame
+    Estimate candidate_;                        // TRACKING's estimate, waiting for VALIDATING
+    cv::Vec3f reference_color_;                 // the target's colour the last time it moved
 
     // The frame being stepped.
     Timestamp now_ = 0;

@@ -22,6 +22,7 @@ enum class LossReason {
     left,               // kept while still, but its colour no longer matches: it has gone
     no_recovery_point,  // no recovery point matches the previous inner point's colour
     recovery_failed,    // the re-estimated inner point did not validate
+    elsewhere,          // the target holds still while the scene's motion is somewhere else
 };
 
 // Lower case, as printed in the JSONL output.
