@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A configuration file from disk to a valid Config: read (bounded), parse, preset, values,
 // cross-checks. Every error is collected before anything is thrown.
 

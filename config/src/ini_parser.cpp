@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // INI syntax through inih, with the line numbers inih does not give.
 //
 // Debian's libinih is built without INI_HANDLER_LINENO, and the handler's signature is fixed when

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Builders for schema rows: each binds a key to one field of Config through an accessor.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The service binary `raypoint` links no video reader (recorded_source.hpp explains why); the
 // commands that need one are run by raypoint-tools, found beside the running executable (the

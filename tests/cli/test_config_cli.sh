@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # check-config, print-config and --config through the real executable: exact messages and exit
 # codes, the XDG search path (in temporary directories), the command line over the file.
 # usage: test_config_cli.sh RAYPOINT

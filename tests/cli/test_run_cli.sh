@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # raypoint run end to end on rendered clips, with the event sink that records to a file: the
 # push gesture clicks exactly twice, a clip without one never clicks; the control socket, SIGHUP
 # reload (a broken file keeps the running configuration), SIGTERM; and bad input.

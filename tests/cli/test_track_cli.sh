@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # raypoint track end to end: a rendered clip through the real command, its JSONL and CSV output
 # checked line by line, and every kind of bad input answered with one line on stderr naming the
 # input and the reason, a non-zero exit, and no hang.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // raypoint ctl over a real unix socket: the daemon side polled as the frame loop does, the
 // client side as `raypoint ctl` runs it.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The settings schema: every key's default, range, parsing and messages; INI round trip; presets.
 
 #include <algorithm>

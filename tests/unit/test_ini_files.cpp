@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Configuration files on disk: read errors, the size bound, load_config's all-or-nothing answer,
 // the XDG search path, the print-config round trip and the shipped packaging/raypoint.ini.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // INI syntax: what is accepted (comments, whitespace, CRLF, BOM, inline comments), and every
 // kind of wrong line answered with its exact "file:line:" message, all of them, in line order.
 

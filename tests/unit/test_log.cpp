@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // log::Logger into a pipe: the sd-daemon priority prefixes journald reads, and their absence on
 // a terminal.
 

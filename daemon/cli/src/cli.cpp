@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/cli/cli.hpp"
 
 #include <cstdio>

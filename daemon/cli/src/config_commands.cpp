@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "config_commands.hpp"
 
 #include <cstdio>

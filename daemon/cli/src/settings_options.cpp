@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/cli/settings_options.hpp"
 
 #include <string>

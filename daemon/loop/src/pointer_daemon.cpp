@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/loop/pointer_daemon.hpp"
 
 #include <poll.h>

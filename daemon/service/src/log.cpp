@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/service/log.hpp"
 
 #include <systemd/sd-daemon.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The one schema of every setting (docs/design.md rule 4): section, key, type, default, range and
 // a one-line doc. Parsing (--set, INI), validation, print-config and the docs all come from it.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Start-up (docs/testing.md): READY=1 only once the camera and uinput are open. The notify
 # listener stops the daemon the moment READY=1 arrives and lists its open devices: both must be
 # there. Without a camera (no writer: the loopback node is no capture device), without uinput

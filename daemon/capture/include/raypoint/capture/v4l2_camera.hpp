@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A V4L2 webcam as a FrameSource: opens the device, negotiates the mode (camera_format.hpp),
 // streams through memory-mapped driver buffers and hands out frames without copying (YUYV) or

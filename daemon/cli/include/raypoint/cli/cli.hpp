@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The command line shared by the two executables: `raypoint` (the service binary: run, ctl,
 // doctor, print-config, check-config) and raypoint-tools (all of those plus the commands that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint ctl pause|resume|recenter|status`: a unix stream socket in $XDG_RUNTIME_DIR. One
 // request line in, one reply out, then the connection closes. The daemon polls the listening

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The loop of `raypoint run`: frames from a source through the tracker and the pointer to an
 // event sink, with the camera's loss and return, pause/resume/recenter/status over the control

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Log lines on stderr. Under systemd stderr goes to journald, which reads a leading "<N>" as the
 // line's syslog priority (sd-daemon's SD_ERR, SD_WARNING, SD_INFO, SD_DEBUG); on a terminal the
