@@ -16,11 +16,20 @@ bool needs_video_tools(std::span<const std::string_view> args) {
     if (args.empty()) return false;
     constexpr std::array<std::string_view, 4> video_commands{"track", "demo", "compare-estimators",
                                                              "bench"};
+    // Help comes from the command table, which this binary holds too (raypoint-tools may be
+    // missing: the help still says what the command would do).
+    const auto options_end = std::find(args.begin(), args.end(), "--");
+    if (std::any_of(args.begin(), options_end,
+                    [](std::string_view arg) { return arg == "--help" || arg == "-h"; })) {
+        return false;
+    }
     const std::string_view command = args.front();
     if (std::find(video_commands.begin(), video_commands.end(), command) != video_commands.end()) {
         return true;
     }
-    return command == "run" && std::find(args.begin(), args.end(), "--input") != args.end();
+    return command == "run" && std::any_of(args.begin(), options_end, [](std::string_view arg) {
+               return arg == "--input" || arg.starts_with("--input=");
+           });
 }
 
 int exec_video_tools(char** argv) {
