@@ -73,7 +73,7 @@ TEST(IniSyntax, CommentsAfterValuesAndHeaders) {
     EXPECT_EQ(loaded.config.core.tracking.min_area, 0.05);
     // Without whitespace before it, ';' or '#' is part of the value.
     EXPECT_EQ(load_text("[estimator]\nmethod = ray;x\n").errors,
-              Errors{"t.ini:2: [estimator] method: unknown value (allowed: "
+              Errors{"t.ini:2: [estimator] method: unknown value, did you mean ray? (allowed: "
                      "ray|iterative-ray|iterative-ny-ray|raster)"});
     EXPECT_EQ(load_text("[estimator]\nrays = 8#x\n").errors,
               Errors{"t.ini:2: [estimator] rays: not an integer (allowed: 3..256)"});

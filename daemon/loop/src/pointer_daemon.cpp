@@ -120,7 +120,8 @@ int PointerDaemon::run() {
                 if (parts_.source->reopen()) {
                     camera_lost_ = false;
                     last_frame_at_ = Clock::now();
-                    log::info("camera open: " + parts_.source->description());
+                    log::info((lost_count_ > 0 ? "camera back: " : "camera found: ") +
+                              parts_.source->description());
                 } else {
                     lost_reason_ = parts_.source->last_error();
                 }

@@ -61,15 +61,33 @@ bool is_journal_stream(int fd, const char* journal_stream) noexcept {
 Logger::Logger(int fd) noexcept
     : fd_(fd), prefix_(is_journal_stream(fd, std::getenv("JOURNAL_STREAM"))) {}
 
+std::string escape_control(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (const char c : text) {
+        const auto byte = static_cast<unsigned char>(c);
+        if ((byte < 0x20 && c != '\t') || byte == 0x7f) {
+            constexpr char hex[] = "0123456789abcdef";
+            out += "\\x";
+            out += hex[byte >> 4];
+            out += hex[byte & 0xf];
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
 void Logger::write(Level level, std::string_view message) const noexcept {
     if (static_cast<int>(level) > static_cast<int>(max_level_)) return;
     try {
         std::string line;
         line.reserve(message.size() + 5);
         if (prefix_) line += prefix_of(level);
-        line += message;
-        for (std::size_t i = line.size() - message.size(); i < line.size(); ++i)
-            if (line[i] == '\n') line[i] = ' ';
+        std::string text(message);
+        for (char& c : text)
+            if (c == '\n') c = ' ';
+        line += escape_control(text);
         line += '\n';
         write_all(fd_, line.data(), line.size());
     } catch (...) {

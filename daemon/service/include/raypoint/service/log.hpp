@@ -8,6 +8,7 @@
 //
 //   raypoint::daemon::log::info("camera " + path + " open, " + std::to_string(fps) + " fps");
 
+#include <string>
 #include <string_view>
 
 namespace raypoint::daemon::log {
@@ -28,7 +29,7 @@ class Logger {
 
     // Writes "<N>message\n" (or "message\n") with one write(2), so lines from several threads
     // do not interleave. A newline inside `message` is written as a space, so that one call
-    // stays one journal entry with one priority.
+    // stays one journal entry with one priority; other control characters as escape_control().
     void write(Level level, std::string_view message) const noexcept;
 
   private:
@@ -39,6 +40,11 @@ class Logger {
 
 // The process's logger on stderr (fd 2), prefixed when stderr is the journal stream.
 Logger& stderr_logger() noexcept;
+
+// `text` with every control character but tab written as \xNN (DEL too), so that text from a
+// file or the command line (a key named "\x1b]0;title\x07") cannot drive the terminal that
+// shows the message. Other bytes, UTF-8 included, pass unchanged.
+std::string escape_control(std::string_view text);
 
 // True when `journal_stream` ($JOURNAL_STREAM, "device:inode") names the file `fd` refers to.
 bool is_journal_stream(int fd, const char* journal_stream) noexcept;
