@@ -140,6 +140,26 @@ TEST(IniSyntax, UnknownKeysSuggestTheNearest) {
               Errors{"t.ini:2: [tracking] Min_Area: unknown key (did you mean min_area?)"});
 }
 
+TEST(IniSyntax, GarbageGetsNoSuggestion) {
+    // Nothing is near: a suggestion would be nonsense.
+    EXPECT_EQ(load_text("[tracking]\nxqzwvjkpf = 1\n").errors,
+              Errors{"t.ini:2: [tracking] xqzwvjkpf: unknown key (raypoint print-config lists "
+                     "every key)"});
+    EXPECT_EQ(load_text("[qqqqqqqqq]\n").errors,
+              Errors{"t.ini:1: [qqqqqqqqq]: unknown section (raypoint print-config lists every "
+                     "section)"});
+}
+
+TEST(IniSyntax, ChoicesInAnyCaseAndTheNearestForAWrongOne) {
+    const auto loaded = load_text("[pointer]\nmode = Absolute\n[estimator]\nmethod = RASTER\n");
+    EXPECT_EQ(loaded.errors, Errors{});
+    EXPECT_EQ(load_text("[pointer]\nmode = absolut\n").errors,
+              Errors{"t.ini:2: [pointer] mode: unknown value, did you mean absolute? (allowed: "
+                     "relative|absolute)"});
+    EXPECT_EQ(load_text("[pointer]\nmode = zzzzzzzz\n").errors,
+              Errors{"t.ini:2: [pointer] mode: unknown value (allowed: relative|absolute)"});
+}
+
 TEST(IniSyntax, DuplicateKeysNameBothLines) {
     const auto loaded =
         load_text("[estimator]\nrays = 8\n[tracking]\nmin_area = 0.05\n[estimator]\nrays = 9\n");

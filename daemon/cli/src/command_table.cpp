@@ -140,14 +140,16 @@ void print_options(std::FILE* out, std::span<const OptionSpec> options, std::siz
         print_block(out, std::string(indent, ' ') + option_head(option), option.help, 29);
 }
 
-const OptionSpec* find_option(const CommandSpec& command, std::string_view name) {
+// Every option `command` accepts: its own, --help, and the settings options when it takes them.
+std::vector<const OptionSpec*> accepted_options(const CommandSpec& command) {
+    std::vector<const OptionSpec*> accepted;
     for (const auto list : {command.options, std::span<const OptionSpec>(help_options),
                             command.settings ? std::span<const OptionSpec>(settings_options)
                                              : std::span<const OptionSpec>()}) {
         for (const OptionSpec& option : list)
-            if (option.name == name) return &option;
+            accepted.push_back(&option);
     }
-    return nullptr;
+    return accepted;
 }
 
 }  // namespace
@@ -228,15 +230,13 @@ std::vector<std::string> normalize_options(const CommandSpec& command,
         }
         const std::size_t equals = arg.find('=');
         const std::string_view name = arg.substr(0, equals);
-        const OptionSpec* option = find_option(command, name);
+        const OptionSpec* option = nullptr;
+        std::vector<std::string_view> names;
+        for (const OptionSpec* known : accepted_options(command)) {
+            if (known->name == name) option = known;
+            names.push_back(known->name);
+        }
         if (option == nullptr) {
-            std::vector<std::string_view> names;
-            for (const auto list : {command.options, std::span<const OptionSpec>(help_options),
-                                    command.settings ? std::span<const OptionSpec>(settings_options)
-                                                     : std::span<const OptionSpec>()}) {
-                for (const OptionSpec& known : list)
-                    names.push_back(known.name);
-            }
             const std::string_view near = closest_name(name, names);
             throw UsageError(std::string(name) + ": unknown option" +
                              (near.empty() ? "" : " (did you mean " + std::string(near) + "?)") +
