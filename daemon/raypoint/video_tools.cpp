@@ -10,6 +10,8 @@
 #include <cstring>
 #include <string>
 
+#include "raypoint/service/log.hpp"
+
 namespace raypoint::daemon {
 
 bool needs_video_tools(std::span<const std::string_view> args) {
@@ -44,12 +46,13 @@ int exec_video_tools(char** argv) {
     for (const std::string& path : {beside, std::string(RAYPOINT_LIBEXEC_DIR "/raypoint-tools")}) {
         if (path.empty()) continue;
         execv(path.c_str(), argv);
-        tried += "\n  execv(" + path + "): " + std::strerror(errno);
+        tried += "; execv(" + path + "): " + std::strerror(errno);
     }
-    std::fprintf(stderr,
-                 "raypoint: %s needs raypoint-tools, which was not found:%s\n"
-                 "  (reinstall raypoint, or build the raypoint-tools target)\n",
-                 argv[1], tried.c_str());
+    // One line, at err: under systemd the journal records why `run --input` did not start.
+    log::error(std::string("raypoint: ") + argv[1] +
+               " needs raypoint-tools, which was not found (" +
+               tried.substr(tried.empty() ? 0 : 2) +
+               "): install the raypoint-tools package, or build the raypoint-tools target");
     return 127;
 }
 
