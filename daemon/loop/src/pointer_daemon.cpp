@@ -77,8 +77,9 @@ PointerDaemon::~PointerDaemon() {
 }
 
 int PointerDaemon::run() {
-    log::info("capturing from " + parts_.source->description() + ", events to " +
-              std::string(parts_.sink->name()));
+    log::info((parts_.start_closed ? std::string("waiting for a camera")
+                                   : "capturing from " + parts_.source->description()) +
+              ", events to " + std::string(parts_.sink->name()));
     // READY even without a camera: the service is up and waiting for one, which a restart loop
     // would not be (it would spin below the start-rate limit as long as the camera is away).
     notifier_.ready();
