@@ -22,7 +22,7 @@ _raypoint() {
     esac
     if [[ $cur == -* ]]; then
         COMPREPLY=($(compgen -W "$(raypoint "$command" --help 2>/dev/null |
-            grep -o -- '--[a-z][a-z-]*' | sort -u)" -- "$cur"))
+            sed -n 's/^ *\(--[a-z][a-z-]*\).*/\1/p')" -- "$cur"))
         return
     fi
     case $command in

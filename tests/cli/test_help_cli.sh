@@ -21,7 +21,7 @@ for command in $commands; do
   done
   # Every option the command accepts, and every command, in the man page (roff writes - as \-).
   grep -qF -- "$(sed 's/-/\\-/g' <<<"$command")" "$man_page" || fail "raypoint(1) lacks the command $command"
-  for option in $(grep -o -- '--[a-z][a-z-]*' "$work/help.txt" | sort -u); do
+  for option in $(sed -n 's/^ *\(--[a-z][a-z-]*\).*/\1/p' "$work/help.txt" | sort -u); do
     grep -qF -- "$(sed 's/-/\\-/g' <<<"$option")" "$man_page" ||
       fail "raypoint(1) lacks $option (an option of raypoint $command)"
   done
