@@ -207,8 +207,9 @@ class Parser {
         }
         switch (section_) {
             case SectionState::none:
-                add_error(at_line() + std::string(name) + ": key before the first [section]" +
-                          did_you_mean(suggestion("", name), "raypoint print-config lists every key"));
+                add_error(
+                    at_line() + std::string(name) + ": key before the first [section]" +
+                    did_you_mean(suggestion("", name), "raypoint print-config lists every key"));
                 return;
             case SectionState::unknown:
                 return;  // the header's error says it all

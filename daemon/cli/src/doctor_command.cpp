@@ -94,7 +94,8 @@ Check check_uinput() {
     const std::string path = "/dev/uinput";
     // Installed (the package, or cmake --install) or not (a build tree): the fix differs.
     const std::string modules_load = RAYPOINT_INSTALL_PREFIX "/lib/modules-load.d/raypoint.conf";
-    const std::string udev_rule = RAYPOINT_INSTALL_PREFIX "/lib/udev/rules.d/70-raypoint-uinput.rules";
+    const std::string udev_rule =
+        RAYPOINT_INSTALL_PREFIX "/lib/udev/rules.d/70-raypoint-uinput.rules";
     if (!std::filesystem::exists(path)) {
         return {false, path + " does not exist (the uinput module is not loaded)",
                 std::filesystem::exists(modules_load)
