@@ -77,7 +77,7 @@ TEST(ControlSocket, UnknownRequestIsAnsweredWithTheAllowedCommands) {
     ASSERT_EQ(poll(&waiting, 1, 5000), 1);
     EXPECT_FALSE(server.next_request().has_value());
     EXPECT_EQ(reply.get(),
-              "error: unknown command 'jump' (allowed: pause|resume|recenter|status)\n");
+              "error: unknown command 'jump' (allowed: pause|resume|toggle|recenter|status)\n");
 }
 
 TEST(ControlSocket, NoDaemonMeansAClearError) {
