@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # raypoint_ini_to_man(INI_FILE OUT_VAR): the keys of a `raypoint print-config` INI file as troff
 # for raypoint.ini(5): one .SS per section, one .TP per key with its description, allowed values
 # and default. The file's layout is print-config's: "# description" lines, then

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/config/config_paths.hpp"
 
 #include <sys/stat.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A configuration file from disk to a valid Config: read (bounded), parse, preset, values,
 // cross-checks. Every error is collected before anything is thrown.
 
@@ -70,6 +71,33 @@ Config config_from_file(const IniFile& file, std::optional<std::string_view> pre
     return config;
 }
 
+namespace {
+
+// "file:line: problem" for a cross-check's problem: the line is the last in the file of the keys
+// the problem names (the one that made the pair wrong, as a reader edits top down); without one
+// (both values from the preset), "file: problem".
+std::string located(const IniFile& file, const std::string& problem) {
+    int line = 0;
+    for (const IniSetting& setting : file.settings) {
+        const std::string name = setting.key->full_name();
+        for (std::size_t at = problem.find(name); at != std::string::npos;
+             at = problem.find(name, at + 1)) {
+            const std::size_t end = at + name.size();
+            const auto part_of_name = [](char c) {
+                return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.';
+            };
+            if ((at == 0 || !part_of_name(problem[at - 1])) &&
+                (end == problem.size() || !part_of_name(problem[end]))) {
+                line = std::max(line, setting.line);
+                break;
+            }
+        }
+    }
+    return file.name + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + problem;
+}
+
+}  // namespace
+
 Config load_config(const std::filesystem::path& path, std::optional<std::string_view> preset) {
     const IniFile file = read_ini_file(path);
     std::vector<std::string> errors = file.errors;
@@ -77,7 +105,7 @@ Config load_config(const std::filesystem::path& path, std::optional<std::string_
     // Cross-checks of a half-applied file would blame keys that are fine.
     if (errors.empty()) {
         for (const auto& problem : cross_check(config))
-            errors.push_back(file.name + ": " + problem);
+            errors.push_back(located(file, problem));
     }
     if (!errors.empty()) throw InvalidConfig(std::move(errors));
     return config;

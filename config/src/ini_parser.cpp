@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // INI syntax through inih, with the line numbers inih does not give.
 //
 // Debian's libinih is built without INI_HANDLER_LINENO, and the handler's signature is fixed when
@@ -83,6 +84,7 @@ std::string suggestion(std::string_view section, std::string_view name) {
     for (const Key& key : schema())
         consider(key.section, key.name);
     consider(general_section, preset_key);
+    if (!similar(best_distance, name.size())) return {};
     if (best_section == section) return std::string(best_name);
     std::string named(1, '[');  // appended: see shown()
     named.append(best_section).append("] ").append(best_name);
@@ -184,8 +186,10 @@ class Parser {
         }
         if (!is_section(name)) {
             const std::string_view extra[] = {general_section};
-            add_error(at_line() + "[" + name + "]: unknown section (did you mean [" +
-                      nearest_section(name, extra) + "]?)");
+            const std::string near = nearest_section(name, extra);
+            add_error(at_line() + "[" + name + "]: unknown section" +
+                      did_you_mean(near.empty() ? near : "[" + near + "]",
+                                   "raypoint print-config lists every section"));
             section_ = SectionState::unknown;
             return {};
         }
@@ -203,9 +207,9 @@ class Parser {
         }
         switch (section_) {
             case SectionState::none:
-                add_error(at_line() + std::string(name) +
-                          ": key before the first [section] (did you mean " + suggestion("", name) +
-                          "?)");
+                add_error(
+                    at_line() + std::string(name) + ": key before the first [section]" +
+                    did_you_mean(suggestion("", name), "raypoint print-config lists every key"));
                 return;
             case SectionState::unknown:
                 return;  // the header's error says it all
@@ -217,8 +221,9 @@ class Parser {
         const Key* key = section_name_ == general_section ? nullptr : find_key(section_name_, name);
         const bool is_preset = section_name_ == general_section && name == preset_key;
         if (key == nullptr && !is_preset) {
-            add_error(where + "unknown key (did you mean " + suggestion(section_name_, name) +
-                      "?)");
+            add_error(where + "unknown key" +
+                      did_you_mean(suggestion(section_name_, name),
+                                   "raypoint print-config lists every key"));
             return;
         }
         const auto [first, inserted] =

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Builders for schema rows: each binds a key to one field of Config through an accessor.
 
@@ -112,14 +113,36 @@ Key choice_key(std::string_view section, std::string_view name, std::string_view
         }
         return std::string("?");
     };
+    // Exact, else the one choice equal but for case ("Absolute" is absolute: the values are
+    // lower case, and no two differ only in case); else the reason, with the closest choice.
     key.parse = [names](std::string_view text, Value& parsed) -> std::optional<std::string> {
+        const auto lower = [](std::string_view s) {
+            std::string out(s);
+            for (char& c : out)
+                if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+            return out;
+        };
         for (std::size_t i = 0; i < names.size(); ++i) {
             if (names[i].second == text) {
                 parsed = ChoiceIndex{i};
                 return std::nullopt;
             }
         }
-        return "unknown value";
+        std::string best;
+        std::size_t best_distance = SIZE_MAX;
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            if (lower(names[i].second) == lower(text)) {
+                parsed = ChoiceIndex{i};
+                return std::nullopt;
+            }
+            const std::size_t distance = edit_distance(lower(text), names[i].second);
+            if (distance < best_distance) {
+                best_distance = distance;
+                best = names[i].second;
+            }
+        }
+        if (!similar(best_distance, text.size())) return "unknown value";
+        return "unknown value, did you mean " + best + "?";
     };
     key.assign = [access, names](Config& c, const Value& value) {
         access(c) = names[std::get<ChoiceIndex>(value).index].first;

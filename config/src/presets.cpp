@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/config/config.hpp"
 
 namespace raypoint::config {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include <algorithm>
 #include <sstream>
 
@@ -102,7 +103,12 @@ std::string nearest_key(std::string_view wanted) {
             best = name;
         }
     }
-    return best;
+    return similar(best_distance, wanted.size()) ? best : std::string();
+}
+
+std::string did_you_mean(const std::string& suggestion, std::string_view otherwise) {
+    if (suggestion.empty()) return " (" + std::string(otherwise) + ")";
+    return " (did you mean " + suggestion + "?)";
 }
 
 std::string nearest_section(std::string_view wanted, std::span<const std::string_view> extra) {
@@ -119,7 +125,7 @@ std::string nearest_section(std::string_view wanted, std::span<const std::string
         consider(key.section);
     for (const auto section : extra)
         consider(section);
-    return std::string(best);
+    return similar(best_distance, wanted.size()) ? std::string(best) : std::string();
 }
 
 void apply_assignment(Config& config, std::string_view assignment) {
@@ -134,8 +140,9 @@ void apply_assignment(Config& config, std::string_view assignment) {
     const auto value = assignment.substr(equals + 1);
     const Key* key = find_key(section, name);
     if (key == nullptr) {
-        throw ConfigError("--set " + shown + ": unknown key (did you mean " +
-                          nearest_key(assignment.substr(0, equals)) + "?)");
+        throw ConfigError("--set " + shown + ": unknown key" +
+                          did_you_mean(nearest_key(assignment.substr(0, equals)),
+                                       "raypoint print-config lists every key"));
     }
     if (const auto reason = key->set(config, value)) {
         throw ConfigError("--set " + shown + ": " + *reason + " (allowed: " + key->allowed() + ")");
@@ -184,7 +191,7 @@ std::string to_ini(const Config& config) {
     const Config defaults;
     std::ostringstream out;
     out << "# raypoint configuration. Every key, its default and its allowed values;\n"
-           "# see raypoint.ini(5) and docs/settings.md for why each default is what it is.\n";
+           "# see raypoint.ini(5) for where raypoint looks for this file.\n";
     std::string_view section;
     for (const auto& key : schema()) {
         if (key.section != section) {

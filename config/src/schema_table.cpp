@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The table itself: every setting, once. Defaults come from the structs in core/settings.hpp.
 
 #include "key_builders.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The whole core, frame in -> position out (Tracker::process), in the steady state of a
 // tracked target: every input size and format, each instruction set at 640x480, and the
 // estimator's n, y, m around the defaults at 640x480 BGR (target: <= 150 us at 640x480,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Cost of estimation (paper section 3) for each estimator at and around the defaults of n
 // (rays), y (levels of casting) and m (block size), and of the steps after it: the state
 // machine's own logic (paper 4.2) and the pointer (position to device command).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Synthetic input for the core's benchmarks: a dark disk circling over a mildly textured light
 // background at 30 fps, drawn (and converted to YUYV) before any timing.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Per-stage cost of preprocessing (paper 4.1): Poisson-disk filter + subsampling, Sobel edges,
 // difference + brightness compensation; every input size and format, and each instruction set
 // at 640x480. The stages after the filter work on the 160x120 working image only.

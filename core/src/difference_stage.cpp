@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The difference image of preprocessing (paper 4.1): absolute difference, brightness
 // compensation and the global movement value.
 

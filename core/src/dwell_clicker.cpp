@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/core/dwell_clicker.hpp"
 
 #include <cmath>

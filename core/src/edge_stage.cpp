@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Sobel edge image of preprocessing (paper 4.1).
 
 #include "raypoint/core/edge_stage.hpp"

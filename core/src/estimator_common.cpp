@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "estimator_common.hpp"
 
 namespace raypoint::core::detail {

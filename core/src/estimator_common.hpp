@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Pieces shared by the four estimators: multi-level casting, means and the ray-fan area.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SSE2 and AVX2 kernels of the Poisson-disk filter's interior. AVX2 is compiled per function
 // (target attribute) and only called when the CPU has it (best_instruction_set()); SSE2 is
 // part of x86-64. Both store exactly what store_bgr() / store_yuv() would.

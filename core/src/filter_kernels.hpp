@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Vector kernels of the Poisson-disk filter's interior (filter_stage.cpp), and the pixel
 // arithmetic every path shares, so the scalar, SSE2 and AVX2 paths give identical images.

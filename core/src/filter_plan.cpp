@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Poisson-disk filter's plan (paper 4.1): tap positions per working pixel, clamped to the
 // frame, and the interior where the vector kernels need no clamping.
 

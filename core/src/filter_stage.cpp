@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Poisson-disk filter and subsampling of preprocessing (paper 4.1), for BGR and YUYV input,
 // with the grey image computed from the same sums.
 

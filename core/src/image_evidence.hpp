@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // FrameEvidence answered from the preprocessed images of a real frame. The edge image is read
 // by estimate() alone (TRACKING and RECOVERING, paper 4.2), so it is computed there, on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/core/instruction_set.hpp"
 
 namespace raypoint::core {

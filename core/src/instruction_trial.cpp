@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The instruction-set trial: candidates in rotation, the smallest median wins.
 
 #include "raypoint/core/instruction_trial.hpp"

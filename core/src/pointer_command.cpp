@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/core/pointer_command.hpp"
 
 namespace raypoint::core {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/core/pointer_mapper.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Poisson-disk filter's tap offsets (paper 4.1).
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Frame preprocessing (paper 4.1): the stages composed, each on the images of the one before.
 
 #include "raypoint/core/preprocess.hpp"

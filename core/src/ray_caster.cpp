@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/core/ray_caster.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The three estimators without rasterization (paper 3.1, 3.2, 3.3).
 
 #include "ray_estimators.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/core/settings.hpp"
 
 namespace raypoint::core {

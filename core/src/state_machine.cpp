@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/core/state_machine.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/core/tracker.hpp"
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // raypoint: a webcam 3D pointer. The service binary: the daemon and its control, configuration
 // and diagnosis commands. Commands that read video files run in raypoint-tools, so that the
 // service does not map OpenCV's video stack (recorded_source.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The service binary `raypoint` links no video reader (recorded_source.hpp explains why); the
 // commands that need one are run by raypoint-tools, found beside the running executable (the
@@ -8,7 +9,7 @@
 
 namespace raypoint::daemon {
 
-// True for track, demo, compare-estimators, bench, and run with --input.
+// True for track, demo, compare-estimators, bench, and run with --input; false with --help.
 bool needs_video_tools(std::span<const std::string_view> args);
 
 // Replaces this process by raypoint-tools with the same arguments. Returns only on failure,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "annotator.hpp"
 
 #include <string>

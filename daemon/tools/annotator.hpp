@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Draws what the tracker saw on the input frame (--annotate): edges, selected blocks, rays,
 // inner point, centroid and state.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The clips `raypoint bench` measures on: every frame decoded (or rendered) into memory before
 // any timing, with the ground truth when there is one.

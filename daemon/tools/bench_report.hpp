@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The figures `raypoint bench` prints: per clip and overall, each system's median and p95
 // microseconds a frame, its ratio to raypoint's default estimator, and its accuracy.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Runs raypoint's core and the OpenCV peers over one clip's decoded frames: the time each
 // spends a frame and, when the clip has ground truth, its accuracy by the scoring method

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "clip_loader.hpp"
 
 #include <malloc.h>

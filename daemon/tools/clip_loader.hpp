@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint run --input CLIP --realtime`: the clip decoded once, before the run, into the YUYV
 // frames a webcam of the clip's size would deliver, so that no video decoder runs during it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "compare_command.hpp"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "input_error.hpp"
+#include "raypoint/cli/output_path.hpp"
 #include "raypoint/cli/settings_options.hpp"
 #include "raypoint/cli/usage_error.hpp"
 #include "raypoint/core/estimator.hpp"
@@ -164,6 +166,7 @@ int compare_command(std::span<const std::string_view> args) {
             throw UsageError(std::string(rest[i]) + ": unknown option (see raypoint --help)");
         }
     }
+    if (!out_path.empty()) check_output_path("--out", out_path);
     std::vector<Contender> contenders;
     for (const auto kind : {core::EstimatorKind::ray, core::EstimatorKind::iterative_ray,
                             core::EstimatorKind::iterative_ny_ray, core::EstimatorKind::raster}) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "demo_command.hpp"
 
 #include <chrono>
@@ -8,6 +9,7 @@
 
 #include "annotator.hpp"
 #include "input_error.hpp"
+#include "raypoint/cli/output_path.hpp"
 #include "raypoint/cli/settings_options.hpp"
 #include "raypoint/cli/usage_error.hpp"
 #include "raypoint/core/tracker.hpp"
@@ -40,6 +42,7 @@ int demo_command(std::span<const std::string_view> args) {
             throw UsageError(std::string(rest[i]) + ": unknown option (see raypoint --help)");
         }
     }
+    check_output_path("--annotate", annotate_path);
     scene::SceneSpec spec;
     try {
         spec = scene::preset(scene_name);

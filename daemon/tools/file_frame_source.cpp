@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "file_frame_source.hpp"
 
 #include <thread>

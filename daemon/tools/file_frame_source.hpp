@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A recorded video as a FrameSource (`raypoint run --input FILE`): the same loop as a live
 // camera, for tests and for replaying a user's recording. Paced at the video's own rate by

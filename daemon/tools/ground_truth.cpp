@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "ground_truth.hpp"
 
 #include <cerrno>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The ground truth of a scene folder (raypoint-render-scene's output; docs/scoring.md, "What is
 // scored: a scene folder"): truth.jsonl, one line a frame, and masks.npz, the target's visible

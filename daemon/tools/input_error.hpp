@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // An input that cannot be read as video or truth: missing, empty, truncated, not a video, a
 // malformed truth.jsonl or masks.npz. The message names the path and the reason in one line;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The arrays of a NumPy .npz file (a zip archive of .npy files, stored or deflated), as the
 // scene folders' masks.npz: numpy.savez_compressed or raypoint-render-scene's stored writer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "peer_trackers.hpp"
 
 #include <opencv2/imgproc.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a user could run instead of raypoint: OpenCV's CamShift (hue back-projection, as in
 // OpenCV's camshift sample), KCF and CSRT (contrib tracking) and MIL (video). Each is given

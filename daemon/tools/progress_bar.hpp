@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A one-line progress bar on stderr, only when stderr is a terminal (never in pipes or logs).
 

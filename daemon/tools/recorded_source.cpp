@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "recorded_source.hpp"
 
 #include "clip_loader.hpp"

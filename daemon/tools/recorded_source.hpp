@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The RecordedSourceFactory raypoint-tools gives the command line
 // (raypoint/cli/recorded_input.hpp): a file decoded as it plays, or decoded up front and replayed

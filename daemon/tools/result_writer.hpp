@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // One line a frame on stdout: JSONL (the schema the scoring method reads, docs/scoring.md) or CSV.
 

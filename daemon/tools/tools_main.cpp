@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // raypoint-tools: every raypoint command, including those that read and write video files
 // (track, demo, compare-estimators, bench, run --input). `raypoint` runs it for them
 // (video_tools.hpp); it is installed in libexec, not on $PATH.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "track_command.hpp"
 
 #include <chrono>
@@ -11,6 +12,7 @@
 #include "annotator.hpp"
 #include "input_error.hpp"
 #include "progress_bar.hpp"
+#include "raypoint/cli/output_path.hpp"
 #include "raypoint/cli/settings_options.hpp"
 #include "raypoint/cli/usage_error.hpp"
 #include "raypoint/core/tracker.hpp"
@@ -52,7 +54,8 @@ TrackOptions parse_track_options(std::span<const std::string_view> args) {
             options.fps = std::strtod(value.c_str(), &end);
             if (end == value.c_str() || *end != '\0' ||
                 !(options.fps > 0.0 && options.fps <= 1000.0)) {
-                throw UsageError("--fps " + value + ": not a frame rate (allowed: 0..1000)");
+                throw UsageError("--fps " + value +
+                                 ": not a frame rate (allowed: more than 0, at most 1000)");
             }
         } else if (arg.starts_with("-") && arg.size() > 1) {
             throw UsageError(std::string(arg) + ": unknown option (see raypoint --help)");
@@ -62,7 +65,8 @@ TrackOptions parse_track_options(std::span<const std::string_view> args) {
             throw UsageError(std::string(arg) + ": only one input per run");
         }
     }
-    if (options.input.empty()) throw UsageError("track: missing INPUT (a video file or pattern)");
+    if (options.input.empty()) throw UsageError("missing INPUT (a video file or pattern)");
+    if (!options.annotate.empty()) check_output_path("--annotate", options.annotate);
     return options;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Decoded frames of a recorded video or image sequence, with their timestamps. Offline input
 // only: the live camera (V4L2) is a different source.

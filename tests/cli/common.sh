@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Sourced by the CLI tests (after `set -u` and setting $raypoint): a scratch directory $work,
 # removed at exit (a script that needs more at exit sets its own trap after sourcing), fail() to
 # count a failed check, and expect_error.

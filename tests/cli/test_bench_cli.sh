@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # raypoint bench end to end: a rendered scene folder through the real command, every system's row
 # checked for sane figures in each format, a clip without truth timed only, the rendered default
 # scenes, and bad clips and options answered with one line on stderr and exit 1 (input) or 2

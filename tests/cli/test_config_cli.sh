@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # check-config, print-config and --config through the real executable: exact messages and exit
 # codes, the XDG search path (in temporary directories), the command line over the file.
 # usage: test_config_cli.sh RAYPOINT
@@ -20,6 +21,23 @@ run "$raypoint" check-config "$work/bad.ini"
 [ "$rc" -eq 1 ] || fail "check-config bad.ini exited $rc"
 [ "$(cat "$work/err")" = "$expected_errors" ] || fail "check-config errors: $(cat "$work/err")"
 [ ! -s "$work/out" ] || fail "check-config bad.ini wrote to stdout: $(cat "$work/out")"
+
+# Hostile input: control characters come out escaped (a raw ESC ] ... BEL would retitle the
+# terminal), garbage gets no suggestion, an enum's value is read whatever its case, a wrong one
+# gets the closest, and a cross-key error has its line.
+printf '[tracking]\n\033]0;pwned\007 = 1\n[pointer]\nmode = Absolute\n[estimator]\nmethod = iterativ-ray\n[click]\npress_rise = 0.01\nrelease_rise = 0.5\n' > "$work/hostile.ini"
+run "$raypoint" check-config "$work/hostile.ini"
+[ "$rc" -eq 1 ] || fail "check-config hostile.ini exited $rc"
+grep -q "$(printf '\033')" "$work/err" && fail "a raw ESC reached the terminal: $(cat -v "$work/err")"
+grep -qF ':2: [tracking] \x1b]0;pwned\x07: unknown key (raypoint print-config lists every key)' "$work/err" ||
+  fail "the garbage key is not escaped, or got a suggestion: $(cat -v "$work/err")"
+grep -q "mode" "$work/err" && fail "mode = Absolute was refused: $(cat "$work/err")"
+grep -qF ':6: [estimator] method: unknown value, did you mean iterative-ray?' "$work/err" ||
+  fail "no suggestion for a misspelt value: $(cat "$work/err")"
+printf '[click]\npress_rise = 0.01\nrelease_rise = 0.5\n' > "$work/crossed.ini"
+run "$raypoint" check-config "$work/crossed.ini"
+grep -qF "$work/crossed.ini:3: click.release_rise must be below click.press_rise" "$work/err" ||
+  fail "the cross-key error has no line: $(cat "$work/err")"
 
 printf '[estimator]\nrays = 8\n' > "$work/good.ini"
 run "$raypoint" check-config "$work/good.ini"

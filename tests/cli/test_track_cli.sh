@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # raypoint track end to end: a rendered clip through the real command, its JSONL and CSV output
 # checked line by line, and every kind of bad input answered with one line on stderr naming the
 # input and the reason, a non-zero exit, and no hang.
@@ -54,14 +55,24 @@ expect_error 1 "$work/text.mp4: cannot decode as video" track "$work/text.mp4"
 expect_error 1 "$work/truncated.mp4: cannot decode as video" track "$work/truncated.mp4"
 expect_error 1 "$work: is a directory" track "$work"
 expect_error 2 "--estimator nope: unknown estimator (allowed: ray|iterative-ray|iterative-ny-ray|raster)" track "$clip" --estimator nope
-expect_error 1 "--set tracking.min_aera=0.1: unknown key (did you mean tracking.min_area?)" track "$clip" --set tracking.min_aera=0.1
-expect_error 1 "--set tracking.min_area=2: value out of range (allowed: 0..1)" track "$clip" --set tracking.min_area=2
-expect_error 1 "--set estimator.rays=many: not an integer (allowed: 3..256)" track "$clip" --set estimator.rays=many
-expect_error 1 "--set tracking=1: expected section.key=value" track "$clip" --set tracking=1
+expect_error 2 "--set tracking.min_aera=0.1: unknown key (did you mean tracking.min_area?)" track "$clip" --set tracking.min_aera=0.1
+expect_error 2 "--set tracking.min_area=2: value out of range (allowed: 0..1)" track "$clip" --set tracking.min_area=2
+expect_error 2 "--set estimator.rays=many: not an integer (allowed: 3..256)" track "$clip" --set estimator.rays=many
+expect_error 2 "--set tracking=1: expected section.key=value" track "$clip" --set tracking=1
 expect_error 2 "--format xml: unknown format (allowed: jsonl|csv)" track "$clip" --format xml
 expect_error 2 "missing INPUT" track
 expect_error 2 "--bogus: unknown option" track "$clip" --bogus
 expect_error 2 "frobnicate: unknown command" frobnicate
+expect_error 2 "--fromat: unknown option (did you mean --format?)" track "$clip" --fromat csv
+expect_error 2 "--fps 0: not a frame rate" track "$clip" --fps=0
+expect_error 2 "--verbose: takes no value" track "$clip" --verbose=yes
+# The output is checked before the first frame: nothing on stdout.
+expect_error 1 "--annotate /nonexistent/x.mp4: cannot write: /nonexistent: No such file" track "$clip" --annotate /nonexistent/x.mp4
+[ -s "$work/stdout.txt" ] && fail "--annotate to a missing folder printed frames first"
+# --opt=value is --opt value.
+timeout 60 "$raypoint" track "$clip" --format=csv --set=tracking.idle_seconds=5 > "$work/eq.csv" ||
+  fail "--format=csv exited $?"
+head -1 "$work/eq.csv" | grep -q '^frame,' || fail "--format=csv did not write CSV: $(head -1 "$work/eq.csv")"
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures failures"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // raypoint ctl over a real unix socket: the daemon side polled as the frame loop does, the
 // client side as `raypoint ctl` runs it.
 
@@ -76,7 +77,7 @@ TEST(ControlSocket, UnknownRequestIsAnsweredWithTheAllowedCommands) {
     ASSERT_EQ(poll(&waiting, 1, 5000), 1);
     EXPECT_FALSE(server.next_request().has_value());
     EXPECT_EQ(reply.get(),
-              "error: unknown command 'jump' (allowed: pause|resume|recenter|status)\n");
+              "error: unknown command 'jump' (allowed: pause|resume|toggle|recenter|status)\n");
 }
 
 TEST(ControlSocket, NoDaemonMeansAClearError) {

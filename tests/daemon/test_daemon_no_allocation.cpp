@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The daemon's per-frame path does not allocate: PointerDaemon::run() itself, with a rendered
 // clip replayed as a YUYV camera (--realtime's source), the null sink and a control socket,
 // counted by the replaced global operator new of tests/support/allocation_counter.cpp. Counting

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Transcripts from the tracker's output to the evdev events the virtual device sends: recorded
 // core results in (time, state, position, area), the pointer (core) and the event encoder
 // (daemon) in between, evdev events out, written as the file sink writes them. Expectations are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The daemon's latency histogram: exact below 128 us, within its 1/64 bucket width above, and
 // quantiles that agree with sorting the same values.
 

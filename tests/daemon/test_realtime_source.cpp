@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // --realtime's parts without the daemon: the YUYV conversion of a clip (checked against
 // OpenCV's own YUYV decoder) and the replay's order, timestamps, looping, end and drops.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // raypoint-render-scene: renders a preset clip into a scene folder (the dev scenes' format):
 // video.mp4 (MPEG-4 part 2, 'mp4v'), truth.jsonl, scene.json and masks.npz.
 

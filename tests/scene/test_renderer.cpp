@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The scene renderer's promises: exact truth, determinism, and each condition doing what it says.
 
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Click by depth end to end: rendered clips through the real tracker and the pointer with its
 // default settings. The push scene's paper hand comes to rest at 4.5 s and pushes toward the
 // camera at 5.0 s and 6.6 s (0.3 s in, 0.1 s held, 0.3 s out, 25% closer): exactly two clicks,

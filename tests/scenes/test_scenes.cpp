@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Scene tests: the tracker on the project's own rendered clips (daemon/scene), scored against
 // their exact truth by the scoring method (docs/scoring.md). Thresholds: the project's accuracy
 // requirements where there is one (detection within 0.5 s; >= 95% on target for the ideal and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Counting heap allocations, for the "no allocation per frame" promises (tracker.hpp,
 // event_sink.hpp). allocation_counter.cpp replaces the global operator new and delete for the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // raypoint-evdev-recorder: what a desktop would read from the daemon's virtual pointer. Waits
 // for the /dev/input/eventN named NAME, reads it with libevdev in this separate process and
 // prints one line an event until SIGTERM/SIGINT or until the device goes away:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // raypoint-loopback-writer: a rendered clip as a webcam. `convert` decodes a clip once (on the
 // host, where it is fast) into raw YUYV frames; `play` writes them into a v4l2loopback node at
 // the clip's pace, as a camera delivers them, so the VM's CPU goes to the daemon and not to a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // raypoint-notify-listener: systemd's side of the notify protocol, for the VM tests. Binds
 // SOCKET (a datagram socket, what NOTIFY_SOCKET names), prints every message the daemon sends
 // with its CLOCK_MONOTONIC time, until SIGTERM/SIGINT:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The uinput device on a real kernel, as libevdev's own test_uinput_events does: create the
 // device, open its /dev/input/eventN with libevdev, emit motion and clicks through UinputPointer,
 // read the events back and compare them with the shared encoder's (what --sink file writes).

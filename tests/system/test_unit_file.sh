@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # The user unit as this build configures it must pass `systemd-analyze verify`, with ExecStart
 # pointing at this build's raypoint (verify checks that the executable exists). Also prints the
 # unit's exposure score from `systemd-analyze security --offline`. Exit 77 (skipped) where there

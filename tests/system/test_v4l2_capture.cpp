@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A real capture: opens $RAYPOINT_TEST_CAMERA (else "auto"), takes 10 frames and checks their
 // size, format, stride and timestamps, then release() and reopen() and 3 frames more, then the
 // exposure lock. Exit 77 (CTest: skipped) when the machine has no capture device; the VM job

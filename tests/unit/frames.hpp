@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Small helpers shared by the unit tests: synthetic frames and FrameViews over them.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Helpers for the configuration-file tests: field-by-field comparison through the schema, a
 // temporary directory, and environment variables restored after the test.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Drawn edge images for the estimator tests: a filled mask, its outline and the fair truth.
 

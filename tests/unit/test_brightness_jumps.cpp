@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Paper 4.1/4.2: a camera's sudden exposure change must not start a search; a moving object
 // must. The real Preprocessor on rendered frames feeds the StateMachine through a minimal
 // FrameEvidence (movement, centre of mass of the difference, raster estimates, patch colours).

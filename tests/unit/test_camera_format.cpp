@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Camera setup without a camera: the choice of mode from what a driver offers, and the error
 // messages with their hints (the /proc scan for who holds a device).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Click by dwelling (click.mode = dwell) as transcripts (test_pointer_transcript.hpp): the
 // cursor held within 0.015 frame widths for 1 s clicks once (press and release in one command),
 // then not again until it has moved out of that radius. 10 fps rows, 4:3 frame, clicks allowed

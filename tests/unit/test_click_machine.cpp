@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Click by depth as transcripts (test_pointer_transcript.hpp): 10 fps rows of the tracker's
 // result in, the click state and the device command out. The size column is sqrt(area); a rise
 // is size over the baseline, minus 1. Settings: start 5%, press 20%, release 10%, push 0.35 s,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The settings schema: every key's default, range, parsing and messages; INI round trip; presets.
 
 #include <algorithm>
@@ -221,7 +222,7 @@ TEST(ApplyAssignment, ExactMessages) {
     EXPECT_EQ(error_of("tracking.keep_still_target=maybe"),
               "--set tracking.keep_still_target=maybe: not a boolean (allowed: true|false)");
     EXPECT_EQ(error_of("estimator.method=rays"),
-              "--set estimator.method=rays: unknown value (allowed: "
+              "--set estimator.method=rays: unknown value, did you mean ray? (allowed: "
               "ray|iterative-ray|iterative-ny-ray|raster)");
     EXPECT_EQ(error_of("output.ema_weight=1"),
               "--set output.ema_weight=1: value out of range (allowed: 0..0.999)");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Brightness compensation and the movement value (paper 4.1), against hand-computed sums.
 
 #include <vector>

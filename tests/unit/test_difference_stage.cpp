@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The difference stage on its own (paper 4.1): two drawn working images with a brightness
 // jump and a moving square, against sums computed pixel by pixel here.
 

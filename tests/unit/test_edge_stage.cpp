@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Sobel edge stage on its own (paper 4.1): drawn working images with known edges, no
 // filter in front.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The four object projection feature estimators (paper 3.1-3.4) on drawn edge images.
 //
 // What each measures (estimator_common.cpp, raster_estimator.cpp):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Poisson-disk filter's plan and stage on their own (paper 4.1): where each tap reads for
 // an input size and format, and the stage's current and previous images.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Poisson-disk filter and subsampling (paper 4.1) against a plain reference written from
 // the documented definition: working pixel centre round((i + 0.5) * N / n - 0.5), taps at
 // round(tap * radius) with radius = filter_radius * width / 640, clamped to the frame, summed

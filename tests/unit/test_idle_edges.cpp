@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // An idle tracker skips the edge stage (paper 4.1's Sobel image is read only by the estimators
 // of 4.2, in TRACKING and RECOVERING), and that changes no result: the Tracker against a
 // reference made of the same parts over a Preprocessor that computes the edges on every frame,

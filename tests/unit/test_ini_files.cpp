@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Configuration files on disk: read errors, the size bound, load_config's all-or-nothing answer,
 // the XDG search path, the print-config round trip and the shipped packaging/raypoint.ini.
 
@@ -59,12 +60,21 @@ TEST(IniFiles, LoadConfigGivesAValidConfigOrEveryError) {
     EXPECT_EQ(config.core.preprocess.edge_threshold, 128);
     EXPECT_EQ(load_config(good, "default").core.preprocess.edge_threshold, 96);
 
-    // Cross-checks come after the file, named by the file; each key alone is in range.
+    // Cross-checks come after the file, at the line of the last key they name; each key alone
+    // is in range.
     const auto crossed = dir.write("crossed.ini", "[tracking]\nmin_area = 0.7\ncolor_patch = 4\n");
     EXPECT_EQ(load_errors(crossed),
-              (Errors{crossed.string() + ": tracking.min_area must be below tracking.max_area",
-                      crossed.string() + ": tracking.color_patch must be odd, so the square has "
+              (Errors{crossed.string() + ":2: tracking.min_area must be below tracking.max_area",
+                      crossed.string() + ":3: tracking.color_patch must be odd, so the square has "
                                          "a centre"}));
+    const auto pair = dir.write("pair.ini", "[tracking]\nmax_area = 0.2\nmin_area = 0.3\n");
+    EXPECT_EQ(load_errors(pair),
+              Errors{pair.string() + ":3: tracking.min_area must be below tracking.max_area"});
+    // One key of the pair from the preset: the line of the one the file set.
+    const auto preset_only = dir.write("preset.ini", "[pointer]\nactive_left = 0.99\n");
+    EXPECT_EQ(load_errors(preset_only),
+              Errors{preset_only.string() +
+                     ":2: pointer.active_left must be below pointer.active_right"});
     // ...but only when every line is right: a half-applied file would blame the wrong keys.
     const auto both = dir.write("both.ini", "[tracking]\nmin_area = 0.7\nmax_area = 2\n");
     EXPECT_EQ(load_errors(both),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The command line over the file (daemon/src/settings_options.cpp): preset, then --config FILE,
 // then --estimator and --set in order; the cross-checks after all of them.
 

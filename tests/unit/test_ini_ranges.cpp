@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Every key of the schema through the INI path: range edges accepted and set exactly, one step
 // outside rejected with the exact "file:line: [section] key: reason (allowed: range)" message,
 // every choice accepted, wrong types rejected.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // INI syntax: what is accepted (comments, whitespace, CRLF, BOM, inline comments), and every
 // kind of wrong line answered with its exact "file:line:" message, all of them, in line order.
 
@@ -72,7 +73,7 @@ TEST(IniSyntax, CommentsAfterValuesAndHeaders) {
     EXPECT_EQ(loaded.config.core.tracking.min_area, 0.05);
     // Without whitespace before it, ';' or '#' is part of the value.
     EXPECT_EQ(load_text("[estimator]\nmethod = ray;x\n").errors,
-              Errors{"t.ini:2: [estimator] method: unknown value (allowed: "
+              Errors{"t.ini:2: [estimator] method: unknown value, did you mean ray? (allowed: "
                      "ray|iterative-ray|iterative-ny-ray|raster)"});
     EXPECT_EQ(load_text("[estimator]\nrays = 8#x\n").errors,
               Errors{"t.ini:2: [estimator] rays: not an integer (allowed: 3..256)"});
@@ -137,6 +138,26 @@ TEST(IniSyntax, UnknownKeysSuggestTheNearest) {
               Errors{"t.ini:2: [general] rays: unknown key (did you mean [estimator] rays?)"});
     EXPECT_EQ(load_text("[tracking]\nMin_Area = 0.05\n").errors,
               Errors{"t.ini:2: [tracking] Min_Area: unknown key (did you mean min_area?)"});
+}
+
+TEST(IniSyntax, GarbageGetsNoSuggestion) {
+    // Nothing is near: a suggestion would be nonsense.
+    EXPECT_EQ(load_text("[tracking]\nxqzwvjkpf = 1\n").errors,
+              Errors{"t.ini:2: [tracking] xqzwvjkpf: unknown key (raypoint print-config lists "
+                     "every key)"});
+    EXPECT_EQ(load_text("[qqqqqqqqq]\n").errors,
+              Errors{"t.ini:1: [qqqqqqqqq]: unknown section (raypoint print-config lists every "
+                     "section)"});
+}
+
+TEST(IniSyntax, ChoicesInAnyCaseAndTheNearestForAWrongOne) {
+    const auto loaded = load_text("[pointer]\nmode = Absolute\n[estimator]\nmethod = RASTER\n");
+    EXPECT_EQ(loaded.errors, Errors{});
+    EXPECT_EQ(load_text("[pointer]\nmode = absolut\n").errors,
+              Errors{"t.ini:2: [pointer] mode: unknown value, did you mean absolute? (allowed: "
+                     "relative|absolute)"});
+    EXPECT_EQ(load_text("[pointer]\nmode = zzzzzzzz\n").errors,
+              Errors{"t.ini:2: [pointer] mode: unknown value (allowed: relative|absolute)"});
 }
 
 TEST(IniSyntax, DuplicateKeysNameBothLines) {

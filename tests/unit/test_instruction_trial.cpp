@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // InstructionTrial on given durations: which combination it picks, the order it measures them
 // in, and a forced set.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // MJPEG decoding scaled in the DCT (jpeg_decoder.hpp) against OpenCV's full decode resized to
 // the same size: the same picture within JPEG's own error, at a fraction of the work.
 

@@ -1,9 +1,11 @@
-// log::Logger into a pipe: the sd-daemon priority prefixes journald reads, and their absence on
-// a terminal.
+// SPDX-License-Identifier: MIT
+// log::Logger into a pipe: the sd-daemon priority prefixes journald reads when stderr is the
+// journal stream ($JOURNAL_STREAM), and plain lines on a pipe or a terminal otherwise.
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <string>
@@ -43,9 +45,18 @@ class Pipe {
     int fds_[2] = {-1, -1};
 };
 
-TEST(Logger, APipeGetsSdDaemonPriorityPrefixes) {
+// $JOURNAL_STREAM's "device:inode" for `fd`, as systemd would set it for a journal stream.
+std::string stream_id(int fd) {
+    struct stat status {};
+    if (::fstat(fd, &status) != 0) throw std::runtime_error("fstat failed");
+    return std::to_string(status.st_dev) + ":" + std::to_string(status.st_ino);
+}
+
+TEST(Logger, TheJournalStreamGetsSdDaemonPriorityPrefixes) {
     Pipe pipe;
+    ::setenv("JOURNAL_STREAM", stream_id(pipe.write_end()).c_str(), 1);
     Logger logger(pipe.write_end());
+    ::unsetenv("JOURNAL_STREAM");
     EXPECT_TRUE(logger.prefixed());
     logger.set_max_level(Level::debug);
     logger.write(Level::error, "camera /dev/video0 gone");
@@ -64,9 +75,31 @@ TEST(Logger, UnprefixedWritesThePlainLine) {
     EXPECT_EQ(pipe.drain(), "no camera\nready\n");
 }
 
+TEST(Logger, APipeGetsPlainLines) {
+    Pipe pipe;
+    ::unsetenv("JOURNAL_STREAM");
+    Logger logger(pipe.write_end());
+    EXPECT_FALSE(logger.prefixed());
+    logger.write(Level::error, "no camera");
+    EXPECT_EQ(pipe.drain(), "no camera\n");
+}
+
+TEST(Logger, AnotherFilesJournalStreamIsNotOurs) {
+    Pipe pipe;
+    Pipe journal;
+    // A service's child whose stderr was redirected to a pipe inherits $JOURNAL_STREAM.
+    EXPECT_FALSE(raypoint::daemon::log::is_journal_stream(pipe.write_end(),
+                                                          stream_id(journal.write_end()).c_str()));
+    EXPECT_TRUE(raypoint::daemon::log::is_journal_stream(pipe.write_end(),
+                                                         stream_id(pipe.write_end()).c_str()));
+    EXPECT_FALSE(raypoint::daemon::log::is_journal_stream(pipe.write_end(), "garbage"));
+    EXPECT_FALSE(raypoint::daemon::log::is_journal_stream(pipe.write_end(), "12:"));
+    EXPECT_FALSE(raypoint::daemon::log::is_journal_stream(pipe.write_end(), nullptr));
+}
+
 TEST(Logger, DebugIsDroppedUnlessAsked) {
     Pipe pipe;
-    Logger logger(pipe.write_end());
+    Logger logger(pipe.write_end(), true);
     EXPECT_EQ(logger.max_level(), Level::info);
     logger.write(Level::debug, "frame 1");
     logger.write(Level::info, "shown");
@@ -78,7 +111,7 @@ TEST(Logger, DebugIsDroppedUnlessAsked) {
 
 TEST(Logger, ANewlineInTheMessageStaysOneLine) {
     Pipe pipe;
-    Logger logger(pipe.write_end());
+    Logger logger(pipe.write_end(), true);
     logger.write(Level::error, "first\n<6>second");
     EXPECT_EQ(pipe.drain(), "<3>first <6>second\n");
 }
@@ -100,6 +133,7 @@ TEST(Logger, FreeFunctionsWriteToStderr) {
     const int saved = ::dup(STDERR_FILENO);
     ::dup2(pipe.write_end(), STDERR_FILENO);
     // stderr_logger() decided on its prefix at first use; whatever it decided, the line is there.
+    // (tests/cli/test_journal_priority.sh checks the decision on a real process.)
     raypoint::daemon::log::warning("to stderr");
     ::dup2(saved, STDERR_FILENO);
     ::close(saved);

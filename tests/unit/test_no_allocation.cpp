@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Steady state does not allocate (estimator.hpp, tracker.hpp), counted by the replaced global
 // operator new of tests/support/allocation_counter.cpp.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Pointer motion as transcripts (test_pointer_transcript.hpp): tracker results in, device motion
 // out. 10 fps rows, a 4:3 frame (a y fraction is 0.75 frame widths), clicks off. Distances are
 // in frame widths: x fractions are widths already, y fractions times 0.75.

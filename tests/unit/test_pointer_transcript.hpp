@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Transcript tests for the pointer: one table row a frame, the tracker's result in (time, state,
 // smoothed x and y, sqrt(area)) and the device command out, written as text:

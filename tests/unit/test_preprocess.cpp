@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Frame preprocessing (paper 4.1), each step against hand-computed values.
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A ray's length runs to the ridge of the edge band in front of it, where the outline is:
 // the strongest edge pixel, or the middle of a run of equally strong ones (a saturated band).
 

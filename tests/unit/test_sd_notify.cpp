@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // SdNotifier against a real AF_UNIX datagram socket set as NOTIFY_SOCKET, as systemd would give
 // it: the messages, their payloads and their order are what the service manager sees.
 

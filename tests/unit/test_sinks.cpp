@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pointer's outputs without a kernel: the command-to-events encoding that the uinput device
 // and the file sink share, the file sink's text, and --sink.
 

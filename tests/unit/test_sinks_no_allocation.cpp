@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The per-frame path of the sinks does not allocate (event_sink.hpp), counted by the replaced
 // global operator new of tests/support/allocation_counter.cpp. stdio's own buffer is malloc'd, not
 // new'd: FileSink hands stdio a buffer up front.

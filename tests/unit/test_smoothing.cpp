@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Output smoothing (paper 4.3): the per-frame exponential average and the One Euro filter.
 
 #include <cmath>

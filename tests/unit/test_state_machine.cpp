@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The state machine (paper 4.2) as transcripts: one row a frame, features in, state out.
 // Working image 160x120 = 19,200 pixels unless a test says otherwise, so the paper's
 // thresholds apply unscaled: search above 57,600, idle below 4,800, area 2% = 384 to

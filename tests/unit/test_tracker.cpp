@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The Tracker end to end on synthetic 640x480 frames: a black disk on white with mild sensor
 // noise, 30 fps. The noise matters: without it the difference image has so few distinct
 // values that the brightness compensation (paper 4.1) removes most of a clean disk's movement.

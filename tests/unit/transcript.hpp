@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Transcript tests for the state machine: a scripted FrameEvidence, one table row a frame.
 // Frame features in (time, movement, detection, estimates, colours), state and events out.

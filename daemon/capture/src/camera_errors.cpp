@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/capture/camera_errors.hpp"
 
 #include <unistd.h>

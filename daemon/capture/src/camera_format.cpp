@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/capture/camera_format.hpp"
 
 #include <linux/videodev2.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/capture/jpeg_decoder.hpp"
 
 // libjpeg's header needs size_t and FILE declared first.

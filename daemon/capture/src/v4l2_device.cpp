@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/capture/v4l2_device.hpp"
 
 #include <fcntl.h>

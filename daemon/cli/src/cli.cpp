@@ -1,105 +1,93 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/cli/cli.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
 #include <vector>
 
+#include "command_table.hpp"
 #include "config_commands.hpp"
 #include "doctor_command.hpp"
 #include "raypoint/cli/usage_error.hpp"
 #include "raypoint/config/ini_file.hpp"
+#include "raypoint/service/log.hpp"
 #include "run_command.hpp"
 
 namespace raypoint::daemon {
 namespace {
 
-constexpr std::string_view usage = R"(usage: raypoint COMMAND [options]
+bool is_help(std::string_view arg) {
+    return arg == "--help" || arg == "-h";
+}
 
-commands:
-  run              the daemon: webcam in, a virtual pointer out (a systemd user
-                   service: systemctl --user enable --now raypoint)
-      --camera DEVICE        /dev/videoN, /dev/v4l/by-id/..., or auto (default)
-      --lock-exposure        lock auto exposure, gain and white balance
-      --input FILE           a recorded video instead of the camera, at its own pace
-      --unpaced              with --input: as fast as the core runs
-      --realtime             with --input: decode the clip first, then replay it from
-                             memory as a YUYV camera would deliver it (the daemon's
-                             own cost, printed at exit and in ctl status)
-      --duration SECONDS     stop after SECONDS (with --realtime the clip loops)
-      --sink SPEC            uinput (default), file:PATH (the events as text), null
-      --control PATH         control socket (default $XDG_RUNTIME_DIR/raypoint.sock)
-      --no-control           no control socket
-                   SIGHUP reloads the configuration; SIGINT and SIGTERM stop it,
-                   releasing every button.
-  ctl pause|resume|recenter|status
-                   talk to the running daemon (--control PATH as for run)
-  doctor           check the configuration, the webcam, /dev/uinput and the
-                   service, and print the fix for each failure
-  track INPUT      track a recorded video or image sequence ("frames/%04d.png"),
-                   one line a frame on stdout
-      --format jsonl|csv     output format (default jsonl)
-      --annotate OUT.mp4     also write the video with what the tracker saw
-      --fps N                frame rate for the timestamps (default: the
-                             container's; 30 for an image sequence)
-      --verbose              say on stderr when and why a target is lost or recovered
-  demo             render a scene in memory, track it, print the 3D positions and
-                   write an annotated clip
-      --scene NAME           scene preset (default nonconvex)
-      --annotate OUT.mp4     annotated clip (default raypoint-demo.mp4)
-  compare-estimators         measure the four estimators (docs/estimators.md)
-  bench [CLIP...]  time raypoint's core (each estimator) against OpenCV's CamShift,
-                   KCF, CSRT and MIL on the same decoded frames, with accuracy
-                   where a CLIP has truth.jsonl and masks.npz beside it; a CLIP is
-                   a video or a scene folder (default: rendered scenes)
-      --peers LIST           camshift,kcf,csrt,mil (default all) or none
-      --scenes LIST          rendered scenes without CLIP (default ideal,lowlight,
-                             interfering,nonconvex,realworld,fast,pause)
-      --frames N             at most N frames a clip
-      --format table|markdown|jsonl
-  print-config     print the effective configuration as an INI file (the file
-                   raypoint run reads, see check-config, and the options below)
-      --defaults             read no configuration file
-  check-config [FILE]        check a configuration file, or the one raypoint run
-                             reads ($XDG_CONFIG_HOME/raypoint/raypoint.ini, then
-                             raypoint/raypoint.ini in $XDG_CONFIG_DIRS)
-
-options for run, track, demo, compare-estimators, bench and print-config:
-  --config FILE              read the settings from an INI file (see print-config)
-  --preset default|paper     start from the measured defaults or the paper exactly
-  --estimator NAME           ray|iterative-ray|iterative-ny-ray|raster
-  --set section.key=value    change one setting (repeatable; see print-config)
-)";
+int dispatch(const CommandSpec& spec, std::span<const std::string_view> args,
+             const CommandSet& commands) {
+    const std::string_view command = spec.name;
+    if (command == "run") return run_command(args, commands.recorded);
+    if (command == "ctl") return ctl_command(args);
+    if (command == "doctor") return doctor_command(args);
+    if (command == "print-config") return print_config_command(args);
+    if (command == "check-config") return check_config_command(args);
+    if (commands.video_command != nullptr) {
+        if (const auto code = commands.video_command(command, args)) return *code;
+    }
+    throw UsageError("this binary does not run it: run raypoint " + std::string(command));
+}
 
 }  // namespace
 
+void print_version(std::FILE* out) {
+    std::fprintf(out, "raypoint %s%s%s\n", RAYPOINT_VERSION, *RAYPOINT_GIT_DESCRIBE ? " (git " : "",
+                 *RAYPOINT_GIT_DESCRIBE ? RAYPOINT_GIT_DESCRIBE ")" : "");
+}
+
 int cli_main(int argc, char** argv, const CommandSet& commands) {
     const std::vector<std::string_view> all(argv + 1, argv + argc);
-    if (all.empty() || all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
-        std::fputs(usage.data(), all.empty() ? stderr : stdout);
-        return all.empty() ? 2 : 0;
+    if (all.empty()) {
+        print_usage(stderr);
+        return 2;
+    }
+    if (is_help(all[0]) || all[0] == "help") {
+        print_usage(stdout);
+        return 0;
+    }
+    if (all[0] == "--version") {
+        print_version(stdout);
+        return 0;
     }
     const std::string_view command = all[0];
-    const std::span<const std::string_view> args(all.data() + 1, all.size() - 1);
+    const std::span<const std::string_view> raw(all.data() + 1, all.size() - 1);
     try {
-        if (command == "run") return run_command(args, commands.recorded);
-        if (command == "ctl") return ctl_command(args);
-        if (command == "doctor") return doctor_command(args);
-        if (command == "print-config") return print_config_command(args);
-        if (command == "check-config") return check_config_command(args);
-        if (commands.video_command != nullptr) {
-            if (const auto code = commands.video_command(command, args)) return *code;
+        const CommandSpec* spec = find_command(command);
+        if (spec == nullptr) {
+            std::vector<std::string_view> names;
+            for (const CommandSpec& known : command_table())
+                names.push_back(known.name);
+            const std::string_view near = closest_name(command, names);
+            throw UsageError("unknown command" +
+                             (near.empty() ? "" : " (did you mean " + std::string(near) + "?)") +
+                             "; see raypoint --help");
         }
-        throw UsageError(std::string(command) + ": unknown command (see raypoint --help)");
+        // --help wins over everything else on the line, as in most programs.
+        const auto options_end = std::find(raw.begin(), raw.end(), "--");
+        if (std::any_of(raw.begin(), options_end, is_help)) {
+            print_command_help(*spec, stdout);
+            return 0;
+        }
+        const std::vector<std::string> normalized = normalize_options(*spec, raw);
+        const std::vector<std::string_view> args(normalized.begin(), normalized.end());
+        return dispatch(*spec, args, commands);
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "raypoint %s: %s\n", std::string(command).c_str(), e.what());
+        log::error("raypoint " + std::string(command) + ": " + e.what());
         return 2;
     } catch (const config::InvalidConfig& e) {
         for (const auto& error : e.errors())
-            std::fprintf(stderr, "raypoint %s: %s\n", std::string(command).c_str(), error.c_str());
+            log::error("raypoint " + std::string(command) + ": " + error);
         return 1;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "raypoint %s: %s\n", std::string(command).c_str(), e.what());
+        log::error("raypoint " + std::string(command) + ": " + e.what());
         return 1;
     }
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "config_commands.hpp"
 
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include "raypoint/config/config_paths.hpp"
 #include "raypoint/config/ini_file.hpp"
 #include "raypoint/config/schema.hpp"
+#include "raypoint/service/log.hpp"
 
 namespace raypoint::daemon {
 
@@ -54,17 +56,18 @@ int check_config_command(std::span<const std::string_view> args) {
                         searched.c_str());
             return 0;
         }
-        std::printf("checking %s, the file raypoint run reads\n", file->c_str());
+        std::printf("checking %s, the file raypoint run reads\n",
+                    log::escape_control(file->string()).c_str());
     }
     try {
         config::load_config(*file);
     } catch (const config::InvalidConfig& invalid) {
         std::fflush(stdout);
         for (const auto& error : invalid.errors())
-            std::fprintf(stderr, "%s\n", error.c_str());
+            std::fprintf(stderr, "%s\n", log::escape_control(error).c_str());
         return 1;
     }
-    std::printf("%s: ok\n", file->c_str());
+    std::printf("%s: ok\n", log::escape_control(file->string()).c_str());
     return 0;
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "doctor_command.hpp"
 
 #include <unistd.h>
@@ -91,16 +92,26 @@ Check check_camera(const config::Config& settings) {
 
 Check check_uinput() {
     const std::string path = "/dev/uinput";
+    // Installed (the package, or cmake --install) or not (a build tree): the fix differs.
+    const std::string modules_load = RAYPOINT_INSTALL_PREFIX "/lib/modules-load.d/raypoint.conf";
+    const std::string udev_rule =
+        RAYPOINT_INSTALL_PREFIX "/lib/udev/rules.d/70-raypoint-uinput.rules";
     if (!std::filesystem::exists(path)) {
         return {false, path + " does not exist (the uinput module is not loaded)",
-                "sudo modprobe uinput, and install packaging/modules-load.conf as "
-                "/usr/lib/modules-load.d/raypoint.conf so it loads at boot"};
+                std::filesystem::exists(modules_load)
+                    ? "sudo modprobe uinput (" + modules_load + " loads it at every boot)"
+                    : "sudo modprobe uinput, and install packaging/modules-load.conf as " +
+                          modules_load + " so it loads at boot (the raypoint package does)"};
     }
     if (const std::string problem = access_problem(path); !problem.empty()) {
         return {false, path + ": " + problem,
-                "install packaging/70-raypoint-uinput.rules into /usr/lib/udev/rules.d (it gives "
-                "the logged-in user access, TAG+=\"uaccess\"), then sudo udevadm trigger and log "
-                "in again"};
+                std::filesystem::exists(udev_rule)
+                    ? udev_rule +
+                          " is installed: sudo udevadm trigger --sysname-match=uinput, then log "
+                          "out and in again (the access is the active seat's user's)"
+                    : "install packaging/70-raypoint-uinput.rules as " + udev_rule +
+                          " (the raypoint package does; it gives the logged-in user access, "
+                          "TAG+=\"uaccess\"), then sudo udevadm trigger and log in again"};
     }
     return {true, path + " is writable", ""};
 }

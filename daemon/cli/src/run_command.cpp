@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "run_command.hpp"
 
 #include <cmath>
@@ -6,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "raypoint/capture/camera_errors.hpp"
 #include "raypoint/capture/v4l2_camera.hpp"
 #include "raypoint/cli/settings_options.hpp"
 #include "raypoint/cli/sink_option.hpp"
@@ -14,6 +16,7 @@
 #include "raypoint/loop/pointer_daemon.hpp"
 #include "raypoint/output/pointer_events.hpp"
 #include "raypoint/service/log.hpp"
+#include "status_json.hpp"
 
 namespace raypoint::daemon {
 namespace {
@@ -111,7 +114,19 @@ int run_command(std::span<const std::string_view> args, RecordedSourceFactory re
         if (options.camera) camera.settings.device = *options.camera;
         if (options.lock_exposure) camera.settings.lock_exposure = true;
         camera.working = cv::Size(preprocess.work_width, preprocess.work_height);
-        parts.source = std::make_unique<V4l2Camera>(camera);
+        try {
+            parts.source = std::make_unique<V4l2Camera>(camera);
+        } catch (const CameraError& e) {
+            // No camera yet (unplugged, or its permissions not granted yet): the service starts
+            // and waits for one rather than failing into a restart loop. The reason stays in the
+            // log, in STATUS= and in `ctl status`.
+            log::warning(std::string("waiting for a camera: ") + e.what());
+            auto closed = std::make_unique<V4l2Camera>(camera, V4l2Camera::StartClosed{});
+            closed->reopen();  // records last_error() for the status line; fails as above
+            parts.source = std::move(closed);
+            parts.start_closed = true;
+        }
+        parts.close_when_paused = true;
     }
     parts.sink =
         make_sink(parse_sink_spec(options.sink), device_profile(parts.config.core.pointer.motion));
@@ -131,20 +146,25 @@ int run_command(std::span<const std::string_view> args, RecordedSourceFactory re
 int ctl_command(std::span<const std::string_view> args) {
     std::optional<ControlCommand> command;
     std::optional<std::string> path;
+    bool json = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         if (args[i] == "--control") {
             path = std::string(option_value(args, i));
+        } else if (args[i] == "--json") {
+            json = true;
         } else if (const auto parsed = control_command_from_string(args[i]); parsed && !command) {
             command = parsed;
         } else {
             throw UsageError(std::string(args[i]) +
-                             ": unknown (usage: raypoint ctl pause|resume|recenter|status)");
+                             ": unknown (usage: raypoint ctl pause|resume|toggle|recenter|status)");
         }
     }
-    if (!command) throw UsageError("usage: raypoint ctl pause|resume|recenter|status");
+    if (!command) throw UsageError("usage: raypoint ctl pause|resume|toggle|recenter|status");
+    if (json && *command != ControlCommand::status) throw UsageError("--json: only for status");
     const std::string reply = send_control(path ? *path : default_control_path(), *command);
-    std::fputs(reply.c_str(), stdout);
-    return reply.rfind("error:", 0) == 0 ? 1 : 0;
+    const bool failed = reply.rfind("error:", 0) == 0;
+    std::fputs(json && !failed ? status_json(reply).c_str() : reply.c_str(), stdout);
+    return failed ? 1 : 0;
 }
 
 }  // namespace raypoint::daemon

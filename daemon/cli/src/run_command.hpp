@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 
 #include <span>
@@ -12,7 +13,7 @@ namespace raypoint::daemon {
 // the service binary, which links no video reader (recorded_source.hpp).
 int run_command(std::span<const std::string_view> args, RecordedSourceFactory recorded);
 
-// `raypoint ctl pause|resume|recenter|status`: talks to the running daemon.
+// `raypoint ctl pause|resume|toggle|recenter|status [--json]`: talks to the running daemon.
 int ctl_command(std::span<const std::string_view> args);
 
 }  // namespace raypoint::daemon

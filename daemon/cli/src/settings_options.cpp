@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/cli/settings_options.hpp"
 
 #include <string>
@@ -64,7 +65,12 @@ config::Config parse_settings_options(std::span<const std::string_view> args,
         if (option == "--preset" || option == "--config") {
             ++i;
         } else if (option == "--set") {
-            config::apply_assignment(config, option_value(args, i));
+            // A wrong --set is a wrong command line, as a wrong --estimator is: exit 2.
+            try {
+                config::apply_assignment(config, option_value(args, i));
+            } catch (const config::ConfigError& e) {
+                throw UsageError(e.what());
+            }
         } else if (option == "--estimator") {
             const std::string_view name = option_value(args, i);
             const config::Key* key = config::find_key("estimator", "method");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/cli/sink_option.hpp"
 
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/control/control_socket.hpp"
 
 #include <fcntl.h>
@@ -51,6 +52,8 @@ std::string_view to_string(ControlCommand command) noexcept {
             return "pause";
         case ControlCommand::resume:
             return "resume";
+        case ControlCommand::toggle:
+            return "toggle";
         case ControlCommand::recenter:
             return "recenter";
         case ControlCommand::status:
@@ -60,8 +63,9 @@ std::string_view to_string(ControlCommand command) noexcept {
 }
 
 std::optional<ControlCommand> control_command_from_string(std::string_view text) noexcept {
-    for (const auto command : {ControlCommand::pause, ControlCommand::resume,
-                               ControlCommand::recenter, ControlCommand::status}) {
+    for (const auto command :
+         {ControlCommand::pause, ControlCommand::resume, ControlCommand::toggle,
+          ControlCommand::recenter, ControlCommand::status}) {
         if (to_string(command) == text) return command;
     }
     return std::nullopt;
@@ -119,7 +123,7 @@ std::optional<ControlCommand> ControlServer::next_request() noexcept {
     request = request.substr(0, request.find('\n'));
     if (const auto command = control_command_from_string(request)) return command;
     reply("error: unknown command '" + std::string(request) +
-          "' (allowed: pause|resume|recenter|status)\n");
+          "' (allowed: pause|resume|toggle|recenter|status)\n");
     return std::nullopt;
 }
 

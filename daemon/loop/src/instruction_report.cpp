@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/loop/instruction_report.hpp"
 
 #include <chrono>

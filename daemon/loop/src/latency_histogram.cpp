@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/loop/latency_histogram.hpp"
 
 #include <algorithm>

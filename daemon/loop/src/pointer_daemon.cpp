@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/loop/pointer_daemon.hpp"
 
 #include <poll.h>
@@ -76,10 +77,19 @@ PointerDaemon::~PointerDaemon() {
 }
 
 int PointerDaemon::run() {
-    log::info("capturing from " + parts_.source->description() + ", events to " +
-              std::string(parts_.sink->name()));
+    log::info((parts_.start_closed ? std::string("waiting for a camera")
+                                   : "capturing from " + parts_.source->description()) +
+              ", events to " + std::string(parts_.sink->name()));
+    // READY even without a camera: the service is up and waiting for one, which a restart loop
+    // would not be (it would spin below the start-rate limit as long as the camera is away).
     notifier_.ready();
     notifier_.status("initializing");
+    if (parts_.start_closed) {
+        camera_lost_ = true;
+        lost_reason_ = parts_.source->last_error();
+        next_reopen_ = Clock::now() + reopen_interval;
+        notifier_.status("waiting for a camera");
+    }
     start_instruction_trial();
     const auto started = Clock::now();
     statistics_.start(started);
@@ -95,6 +105,13 @@ int PointerDaemon::run() {
             break;
         }
         if (input_ended_) break;
+        if (paused_ && parts_.close_when_paused) {
+            // The camera is closed: nothing to read, only signals, requests and the watchdog.
+            if (notifier_.watchdog_due(now)) notifier_.pet(now);
+            ready = wait_for_events(-1, std::min(now + idle_wake, stop_at_));
+            report(Clock::now());
+            continue;
+        }
         if (camera_lost_) {
             if (parts_.exit_when_lost) break;
             // Alive and handling it: keep the watchdog fed while the camera is away.
@@ -104,7 +121,10 @@ int PointerDaemon::run() {
                 if (parts_.source->reopen()) {
                     camera_lost_ = false;
                     last_frame_at_ = Clock::now();
-                    log::info("camera back: " + parts_.source->description());
+                    log::info((lost_count_ > 0 ? "camera back: " : "camera found: ") +
+                              parts_.source->description());
+                } else {
+                    lost_reason_ = parts_.source->last_error();
                 }
             }
             ready = camera_lost_ ? wait_for_events(-1, std::min(next_reopen_, stop_at_))
@@ -238,6 +258,34 @@ void PointerDaemon::on_lost(const std::string& reason) {
     notifier_.status("camera lost: " + reason);
 }
 
+void PointerDaemon::pause() {
+    if (paused_) return;
+    release_buttons();
+    paused_ = true;
+    if (parts_.close_when_paused && !camera_lost_) {
+        parts_.source->release();
+        log::info("paused: camera closed");
+    }
+}
+
+void PointerDaemon::resume() {
+    if (!paused_) return;
+    paused_ = false;
+    if (!parts_.close_when_paused || camera_lost_) return;
+    if (parts_.source->reopen()) {
+        last_frame_at_ = Clock::now();
+        log::info("resumed: camera open again: " + parts_.source->description());
+    } else {
+        // Unplugged while paused: wait for it as for a lost camera.
+        ++lost_count_;
+        camera_lost_ = true;
+        lost_reason_ = parts_.source->last_error();
+        next_reopen_ = Clock::now() + reopen_interval;
+        log::warning("resumed, but the camera does not open: " + lost_reason_ +
+                     "; waiting for a camera");
+    }
+}
+
 void PointerDaemon::release_buttons() {
     if (pointer_) parts_.sink->emit(pointer_->release_all(), last_timestamp_);
     parts_.sink->release_all(last_timestamp_);
@@ -283,13 +331,21 @@ void PointerDaemon::handle_control() {
     while (const auto command = parts_.control->next_request()) {
         switch (*command) {
             case ControlCommand::pause:
-                if (!paused_) release_buttons();
-                paused_ = true;
+                pause();
                 parts_.control->reply("paused\n");
                 break;
             case ControlCommand::resume:
-                paused_ = false;
+                resume();
                 parts_.control->reply("resumed\n");
+                break;
+            case ControlCommand::toggle:
+                if (paused_) {
+                    resume();
+                    parts_.control->reply("resumed\n");
+                } else {
+                    pause();
+                    parts_.control->reply("paused\n");
+                }
                 break;
             case ControlCommand::recenter:
                 if (last_result_.has_position) {
@@ -312,8 +368,8 @@ void PointerDaemon::report(Clock::time_point now) {
     // The STATUS= line costs a few allocations a second; outside systemd it has no reader.
     if (!notifier_.enabled()) return;
     std::string state =
-        camera_lost_ ? "camera lost" : std::string(core::to_string(last_result_.state));
-    if (paused_) state += " (paused)";
+        camera_lost_ ? "waiting for a camera" : std::string(core::to_string(last_result_.state));
+    if (paused_) state += parts_.close_when_paused ? " (paused, camera closed)" : " (paused)";
     notifier_.status(state + format_status(", %.1f fps, CPU %.1f%%", statistics_.fps(),
                                            statistics_.cpu_percent()));
 }
@@ -321,8 +377,12 @@ void PointerDaemon::report(Clock::time_point now) {
 std::string PointerDaemon::status_text() const {
     std::string text = "state: " + std::string(core::to_string(last_result_.state)) + "\n";
     text += std::string("paused: ") + (paused_ ? "yes" : "no") + "\n";
-    text += "source: " + parts_.source->description() +
-            (camera_lost_ ? " (lost: " + lost_reason_ + ")" : "") + "\n";
+    text +=
+        "source: " +
+        (camera_lost_ ? "waiting for a camera (" + lost_reason_ + ")"
+                      : parts_.source->description() +
+                            (paused_ && parts_.close_when_paused ? " (closed while paused)" : "")) +
+        "\n";
     text += "sink: " + std::string(parts_.sink->name()) + "\n";
     text += format_status("fps: %.1f\ncpu: %.1f%% of one core\n", statistics_.fps(),
                           statistics_.cpu_percent());

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/loop/realtime_source.hpp"
 
 #include <poll.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/loop/run_statistics.hpp"
 
 #include <time.h>

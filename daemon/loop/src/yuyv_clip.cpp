@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/loop/yuyv_clip.hpp"
 
 #include <stdexcept>

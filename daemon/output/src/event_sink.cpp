@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/output/event_sink.hpp"
 
 namespace raypoint::daemon {

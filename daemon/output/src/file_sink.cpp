@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/output/file_sink.hpp"
 
 #include <libevdev/libevdev.h>

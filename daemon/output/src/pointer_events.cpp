@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/output/pointer_events.hpp"
 
 #include <linux/input-event-codes.h>

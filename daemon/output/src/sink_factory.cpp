@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/output/sink_factory.hpp"
 
 #include "raypoint/output/file_sink.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/output/uinput_pointer.hpp"
 
 #include <libevdev/libevdev-uinput.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The static scene behind the target, as the lens forms it (before vignetting, exposure gain
 // and sensor noise). Procedural and deterministic from the seed: no file is read.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The pinhole camera that projects the target: square pixels, principal point at the centre.
 

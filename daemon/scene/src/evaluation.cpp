@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/scene/evaluation.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/scene/json.hpp"
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Truth geometry of a mask that covers only part of the frame.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "photometry.hpp"
 
 #include "rng.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // How light reaches the sensor and what the sensor adds: vignetting, the exposure gain over
 // time, and Gaussian noise.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A sprite placed at a pose on the frame: which pixels it may touch and how to sample its
 // textures there.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A small random generator whose output is the same with every compiler and library
 // (std::*_distribution is implementation-defined, and the scenes must not change with them).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "room_paint.hpp"
 
 #include <algorithm>

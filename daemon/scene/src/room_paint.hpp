@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Paint primitives for the procedural room: colours and textured, shaded surfaces on an
 // 8-bit BGR canvas.

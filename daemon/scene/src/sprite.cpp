@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "sprite.hpp"
 
 #include <algorithm>

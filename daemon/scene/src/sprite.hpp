@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A target's look in its own frame: a signed distance field of its outline and its colour,
 // sampled on a texture that the renderer warps to each pose. Sampling the distance (not

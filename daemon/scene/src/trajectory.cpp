@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "trajectory.hpp"
 
 #include <algorithm>

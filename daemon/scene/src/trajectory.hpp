@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the target is at any time of the clip: the default trajectory or the spec's keyframes,
 // with holds (time stands still) and pushes (depth dips) applied on top.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/service/sd_notify.hpp"
 
 #include <systemd/sd-daemon.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "npz_writer.hpp"
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Writes NumPy .npz archives (a zip of .npy files, stored uncompressed) that numpy.load reads.
 

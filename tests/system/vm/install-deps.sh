@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Installs what the VM system tests need (docs/testing.md), from Debian 12's packages: QEMU, a
 # Debian kernel with headers so DKMS builds v4l2loopback for it, busybox and cpio for the
 # initramfs, udev and libinput-tools for the libinput check. Called by .ci/install-deps; quick

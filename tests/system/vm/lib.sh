@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Shared by prepare.sh and run_scenario.sh (sourced): what the VM needs and how to say it is
 # missing.
 

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # The VM tests' fixture (CTest vm_prepare): checks the prerequisites, builds the initramfs for
 # the newest installed kernel that has v4l2loopback, and renders the clips the scenarios play,
 # as raw YUYV. Writes VM_DIR/kernel.env, VM_DIR/initramfs.gz and VM_DIR/clips/*.yuyv.

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # One VM system test (CTest vm_SCENARIO): boots Debian's kernel under QEMU with the initramfs
 # vm_prepare built, the host's root shared read-only, runs guest/SCENARIO.sh inside it and
 # turns the guest's verdict into the exit code. On failure prints the guest's console and logs.

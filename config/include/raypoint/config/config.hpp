@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The whole configuration of raypoint as plain data. The daemon's settings join the core's here.
 

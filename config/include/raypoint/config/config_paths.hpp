@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where raypoint looks for its configuration file when none is named (XDG Base Directory
 // Specification): $XDG_CONFIG_HOME/raypoint/raypoint.ini (~/.config when unset), then

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Configuration files (docs/configuration.md): INI text checked against the schema with
 // "file:line:" messages, and the whole load (preset, file, cross-checks) that gives either a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The one schema of every setting (docs/design.md rule 4): section, key, type, default, range and
 // a one-line doc. Parsing (--set, INI), validation, print-config and the docs all come from it.
@@ -48,12 +49,21 @@ struct Key {
 
 const std::vector<Key>& schema();
 const Key* find_key(std::string_view section, std::string_view name) noexcept;
-// The valid "section.name" closest to `wanted` by edit distance, for "did you mean".
+// The valid "section.name" closest to `wanted` by edit distance, for "did you mean"; empty when
+// none is close enough to be what was meant (similar()).
 std::string nearest_key(std::string_view wanted);
 // Levenshtein distance: the edits (insert, delete, replace a character) that turn a into b.
 std::size_t edit_distance(std::string_view a, std::string_view b);
+// Whether `distance` edits to a name of `length` characters is a typo rather than another word:
+// at most a third of the letters, plus one (a swap costs two edits, "min_aera" is min_area).
+// Garbage then gets no suggestion instead of a nonsense one.
+constexpr bool similar(std::size_t distance, std::size_t length) noexcept {
+    return distance * 3 <= length + 3;
+}
+// " (did you mean X?)" for a non-empty `suggestion`, else " (" + `otherwise` + ")".
+std::string did_you_mean(const std::string& suggestion, std::string_view otherwise);
 // The section closest to `wanted` among the schema's sections and `extra` ones (sections a reader
-// handles itself, like the INI file's [general]), for "did you mean".
+// handles itself, like the INI file's [general]), for "did you mean"; empty when none is similar.
 std::string nearest_section(std::string_view wanted, std::span<const std::string_view> extra = {});
 
 // A setting that cannot be applied. The message is complete and ready to print.

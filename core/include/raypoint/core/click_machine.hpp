@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Click by depth: pushing the target toward the camera presses the left button, pulling it back
 // releases it. A state machine, one handler a state; docs/pointer.md draws it and must change

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The third stage of frame preprocessing (paper 4.1): the absolute difference of two working
 // images, its brightness compensation (the largest of the 10 smallest distinct values is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Click by dwelling (click.mode = dwell): the cursor held within a radius for a time clicks
 // once; the next click needs a move out of the radius first. A small state machine, drawn in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The second stage of frame preprocessing (paper 4.1): the Sobel edge image of the working
 // image, its magnitude thresholded (128 in the paper; PreprocessSettings::edge_threshold).

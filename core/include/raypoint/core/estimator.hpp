@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Object projection feature estimation (paper section 3): from a binary edge image and a point
 // inside the target's projection (the inner point), estimate the projection's centroid and area

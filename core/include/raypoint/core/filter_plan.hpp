@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the Poisson-disk filter (paper 4.1) reads: for one input size and pixel format, each
 // tap's input column and row at every working pixel, and the byte offsets the vector kernels

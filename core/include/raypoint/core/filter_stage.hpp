@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The first stage of frame preprocessing (paper 4.1): the Poisson-disk filter and subsampling
 // of a camera frame to the working colour, grey and channel images, the current and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A camera frame as the core sees it: borrowed pixels plus the time they were captured.
 

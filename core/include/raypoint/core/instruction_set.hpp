@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The widest vector instructions preprocessing may use (the filter's interior kernels and the
 // Sobel loops). Every set gives the same images bit for bit; only the time differs

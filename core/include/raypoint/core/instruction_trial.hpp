@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Chooses each preprocessing stage's instruction set by measurement: every combination of the
 // sets the CPU runs (filter x edges, at most 3 x 3) is used in turn, frame by frame, and the

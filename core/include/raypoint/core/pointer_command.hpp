@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What the pointer asks the input device to do after one frame: plain data, no device here.
 

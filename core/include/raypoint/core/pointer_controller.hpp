@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The whole pointer: tracker results in, device commands out. Joins the motion mapping, the
 // click (by depth or dwell) and the safety rules: clicks only after min_tracking_seconds of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Tracked position to cursor motion: relative (gain, dead zone, acceleration, sub-pixel
 // remainders) or absolute (an active region of the view onto the device range). Pure: frame

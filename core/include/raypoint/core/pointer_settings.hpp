@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Every tunable of the pointer: how the tracked position moves the cursor, how a push toward the
 // camera or a dwell clicks, and when clicks are allowed at all. Plain data; config/schema_table.cpp

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The Poisson-disk filter's taps (paper 4.1, "a Poisson-disk filter of radius 5").
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Frame preprocessing (paper 4.1): the three stages in order behind one interface. FilterStage
 // (Poisson-disk filter and subsampling to the working size), EdgeStage (Sobel edge image) and

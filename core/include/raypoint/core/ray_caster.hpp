@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Ray casting on a binary edge image: the primitive under all four estimators (paper 3.1-3.4).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Every tunable of the tracking core, as plain data. Defaults are the paper's numbers unless the
 // comment says otherwise; config/src/schema_table.cpp is the one place that names, ranges and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Smoothing of the 3D output (paper 4.3) and the One Euro alternative (Casiez et al. 2012).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The instruction set of each dispatched preprocessing stage (paper 4.1): the filter's and the
 // Sobel loops'. They are chosen apart because their costs differ by CPU (AMD Zen 3's microcoded

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The tracking system's state machine (paper 4.2), one handler a state. It sees frames only
 // through FrameEvidence, so transcript tests drive it with scripted features and the Tracker

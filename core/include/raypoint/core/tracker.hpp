@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The paper's whole system (section 4): frames with timestamps in, the target's projection
 // features, the tracker state and a smoothed 3D position out.

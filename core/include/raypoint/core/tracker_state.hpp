@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The five states of the paper's tracking system (section 4.2); docs/state-machine.md draws them.
 

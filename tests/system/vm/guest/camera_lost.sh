@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Camera lost (docs/testing.md): the drag clip's writer stops at 6.0 s, while the push holds
 # the button down (pressed at about 4.1 s, dragging right from 5.3 s): the daemon keeps running, releases the button
 # within the 2 s stall timeout (and its 0.5 s margin), says "camera lost" in STATUS= and in its

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Click (docs/testing.md): the click clip (rightdown's motion with one push toward the camera at
 # 6.0-6.7 s) gives exactly one BTN_LEFT press and one release, the press during the push; the
 # rightdown clip, the same motion without the push, gives no button event at all.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Helpers for the scenarios (sourced by run.sh, in the VM): devices, the processes under test,
 # checks and transcript sums. A transcript line is "SECONDS TYPE CODE VALUE" (evdev_recorder);
 # clip times are transcript times minus the writer's origin (loopback_writer).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Drag (docs/testing.md): the drag clip (a push at 4.0 s held while the hand moves right
 # 5.3-6.5 s, pulled back at 6.8 s) gives one press, then motion, then one release, in that
 # order: nothing moves before the press, the motion between press and release is at least half

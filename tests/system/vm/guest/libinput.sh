@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # libinput sees it (docs/testing.md): with udev running in the VM (it tags input devices, as on
 # a desktop), `libinput list-devices` lists the virtual pointer with the pointer capability, in
 # both modes.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Motion (docs/testing.md): the rightdown clip (the hand moves right 4.0-5.5 s, stands, moves
 # down 7.5-9.0 s, stands) through raypoint run, in both pointer modes: the cursor's events move
 # right, then down. The stretches are read from 3.9 s to 7.4 s and from 7.4 s to the end.

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # In the VM, chrooted into the host's root (guest/init): the common set-up, then one scenario
 # (guest/SCENARIO.sh, which defines scenario()), then the verdict in JOB/result: pass, fail
 # REASON or skip REASON. Live files go to /run/work (tmpfs) and are copied to JOB/work at the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # The system tests that skip on a machine without devices (uinput_roundtrip, v4l2_capture) run
 # here for real: on uinput, on vivid (the kernel's own test camera) and on the loopback node
 # fed by a writer. Skipping (77) counts as a failure in the VM.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Camera setup errors: one line naming the device, the failing call, the system's reason and
 // what the user can do about it. The per-frame path does not throw (see CaptureStatus).

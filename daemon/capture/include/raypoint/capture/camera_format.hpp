@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which of the modes a camera offers to capture in: a pure choice, no device involved, so every
 // driver's odd list can be unit-tested.

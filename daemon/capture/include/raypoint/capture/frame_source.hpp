@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A live source of frames for the tracking loop: a camera, or anything that acts like one.
 

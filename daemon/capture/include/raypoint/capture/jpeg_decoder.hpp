@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // MJPEG camera frames decoded with libjpeg-turbo, scaled down inside the decoder: a JPEG is
 // coded as 8x8 DCT blocks, and libjpeg can reconstruct each block at 1..8 of 8 pixels a side

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A V4L2 webcam as a FrameSource: opens the device, negotiates the mode (camera_format.hpp),
 // streams through memory-mapped driver buffers and hands out frames without copying (YUYV) or
@@ -50,6 +51,10 @@ class V4l2Camera final : public FrameSource {
     // Opens and starts streaming. Throws CameraError (camera_errors.hpp) with the device, the
     // failing call and what to do.
     explicit V4l2Camera(CameraOptions options);
+    // Starts released, as if lost: next() reports lost until reopen() succeeds. For a service
+    // started before its camera is plugged in.
+    struct StartClosed {};
+    V4l2Camera(CameraOptions options, StartClosed) : options_(std::move(options)) {}
     ~V4l2Camera() override;
     V4l2Camera(const V4l2Camera&) = delete;
     V4l2Camera& operator=(const V4l2Camera&) = delete;

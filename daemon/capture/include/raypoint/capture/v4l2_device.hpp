@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The V4L2 ioctls a camera needs before streaming, as plain functions on a file descriptor:
 // finding capture nodes, what a node offers, and reading and writing controls.

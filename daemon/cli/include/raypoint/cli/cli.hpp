@@ -1,8 +1,10 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The command line shared by the two executables: `raypoint` (the service binary: run, ctl,
 // doctor, print-config, check-config) and raypoint-tools (all of those plus the commands that
 // read or write video files). Usage text, dispatch and the one-line error reports live here once.
 
+#include <cstdio>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -18,6 +20,9 @@ struct CommandSet {
                                         std::span<const std::string_view> args) = nullptr;
     RecordedSourceFactory recorded = nullptr;  // for `run --input`
 };
+
+// "raypoint VERSION (git DESCRIBE)": the project's version and `git describe` when configured.
+void print_version(std::FILE* out);
 
 // Runs the command argv names and returns the process's exit code: 0, 1 (bad input or
 // settings, one line on stderr a problem) or 2 (usage).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint run --input CLIP`: a recorded video as the daemon's camera. Reading video files needs
 // OpenCV's videoio, whose ffmpeg, GStreamer and GDAL dependencies are ~250 shared libraries and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The options every command that runs the core shares: --config, --preset, --set, --estimator.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `--sink uinput|file:PATH|null`: the command line's spelling of a SinkSpec.
 

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: MIT
 #pragma once
-// `raypoint ctl pause|resume|recenter|status`: a unix stream socket in $XDG_RUNTIME_DIR. One
+// `raypoint ctl pause|resume|toggle|recenter|status`: a unix stream socket in $XDG_RUNTIME_DIR. One
 // request line in, one reply out, then the connection closes. The daemon polls the listening
 // socket from its frame loop; nothing here blocks that loop.
 
@@ -10,7 +11,7 @@
 
 namespace raypoint::daemon {
 
-enum class ControlCommand { pause, resume, recenter, status };
+enum class ControlCommand { pause, resume, toggle, recenter, status };
 
 std::string_view to_string(ControlCommand command) noexcept;
 std::optional<ControlCommand> control_command_from_string(std::string_view text) noexcept;

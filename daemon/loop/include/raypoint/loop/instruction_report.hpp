@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The text of an instruction-set trial's outcome (core::InstructionTrial), as the daemon's log,
 // `raypoint ctl status` and `raypoint doctor` state it.

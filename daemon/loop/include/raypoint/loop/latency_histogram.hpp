@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Latencies of the frame loop (frame ready -> event written) in microseconds, kept as a fixed
 // histogram so that recording one costs an index computation and an increment: no allocation

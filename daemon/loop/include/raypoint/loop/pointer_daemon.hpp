@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The loop of `raypoint run`: frames from a source through the tracker and the pointer to an
 // event sink, with the camera's loss and return, pause/resume/recenter/status over the control
@@ -34,6 +35,12 @@ struct DaemonParts {
     std::unique_ptr<EventSink> sink;
     std::unique_ptr<ControlServer> control;  // null: no control socket
     bool exit_when_lost = false;             // a recorded video: exit when it fails, not reopen
+    // The source could not be opened at start (no camera plugged in): the daemon starts anyway,
+    // says "waiting for a camera" and opens it when it appears.
+    bool start_closed = false;
+    // A live camera: paused means closed (its light off, free for a video call), reopened on
+    // resume. A recorded source keeps its place instead.
+    bool close_when_paused = false;
     // --duration: stop after this long (measuring the daemon's cost over a fixed time).
     std::optional<std::chrono::milliseconds> duration;
     // SIGHUP: the new configuration, or throws config::ConfigError to keep the running one.
@@ -66,6 +73,8 @@ class PointerDaemon {
     core::FrameResult process_in_trial(const core::FrameView& frame) noexcept;
     void apply_instruction_choice();
     void on_lost(const std::string& reason);
+    void pause();
+    void resume();
     bool handle_signals();  // false: stop
     void handle_control();
     void reload();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint run --input CLIP --realtime`: a clip held in memory as YUYV frames (yuyv_clip.hpp),
 // delivered like a webcam delivers them. Frame n is due at start + n / fps on CLOCK_MONOTONIC; a

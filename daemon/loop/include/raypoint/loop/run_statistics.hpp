@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What `raypoint ctl status`, systemd's STATUS= and the summary at exit report: frames a second
 // and CPU over the last second or so, and over the whole run the daemon's cost

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Frames as a YUYV webcam delivers them (V4L2_PIX_FMT_YUYV, BT.601 limited range, rows packed),
 // held in memory: what `raypoint run --realtime` replays, so that the daemon's measured cost is

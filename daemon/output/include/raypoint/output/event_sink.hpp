@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where the daemon sends each frame's PointerCommand: the uinput device, a file of the events the
 // device would send (tests compare streams), or nowhere (benchmarks). sink_factory.hpp picks one.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `--sink file:PATH`: the evdev events the uinput device would send, one line each, so a test
 // compares event streams without a kernel. Same encoder as UinputPointer (pointer_events.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The one translation from a PointerCommand to evdev events, shared by the uinput device and the
 // file sink so that a recorded stream is exactly what the device would have sent.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Which EventSink the daemon sends its commands to: the uinput device, a file, or nothing.
 // The command line spells it `--sink uinput|file:PATH|null` (raypoint/cli/sink_option.hpp).

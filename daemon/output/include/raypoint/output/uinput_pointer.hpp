@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The virtual pointer the desktop sees: a uinput device made with libevdev, relative (a mouse) or
 // absolute (a tablet like QEMU's) as the pointer mode says.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Scores a tracker's output against a rendered clip's truth by the project's scoring method
 // (docs/scoring.md), so the scene tests measure what every accuracy figure in docs/ measures.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The text formats of a scene folder, the same as the dev scenes' (truth.jsonl, scene.json).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Named scenes mirroring the paper's experiments (section 5) and the dev scenes:
 //   ideal        sphere, white board, 30 fps

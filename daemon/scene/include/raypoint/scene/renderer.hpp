@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Deterministic renderer of short webcam-like clips with exact ground truth.
 

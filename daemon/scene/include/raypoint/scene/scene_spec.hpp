@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What a rendered clip shows: the target, the background, the camera's conditions and the
 // target's path. Plain data; Renderer checks it and presets.hpp has ready-made ones.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The exact ground truth of one rendered frame, measured on the target's mask.
 

@@ -1,10 +1,14 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Log lines on stderr. Under systemd stderr goes to journald, which reads a leading "<N>" as the
-// line's syslog priority (sd-daemon's SD_ERR, SD_WARNING, SD_INFO, SD_DEBUG); on a terminal the
-// prefix would only be noise, so it is left off there.
+// line's syslog priority (sd-daemon's SD_ERR, SD_WARNING, SD_INFO, SD_DEBUG). The prefix is
+// written only when stderr is that journal stream: systemd sets $JOURNAL_STREAM to the stream's
+// "device:inode", and a process compares it with its stderr's (systemd.exec(5)), so a terminal,
+// a pipe or a file, even one a service redirected, gets plain text.
 //
 //   raypoint::daemon::log::info("camera " + path + " open, " + std::to_string(fps) + " fps");
 
+#include <string>
 #include <string_view>
 
 namespace raypoint::daemon::log {
@@ -14,7 +18,7 @@ enum class Level { error, warning, info, debug };
 // One destination with its prefix decision. The free functions below use one on stderr.
 class Logger {
   public:
-    // Prefixes unless `fd` is a terminal.
+    // Prefixes when `fd` is the journal stream $JOURNAL_STREAM names.
     explicit Logger(int fd) noexcept;
     Logger(int fd, bool prefix) noexcept : fd_(fd), prefix_(prefix) {}
 
@@ -25,7 +29,7 @@ class Logger {
 
     // Writes "<N>message\n" (or "message\n") with one write(2), so lines from several threads
     // do not interleave. A newline inside `message` is written as a space, so that one call
-    // stays one journal entry with one priority.
+    // stays one journal entry with one priority; other control characters as escape_control().
     void write(Level level, std::string_view message) const noexcept;
 
   private:
@@ -34,8 +38,16 @@ class Logger {
     Level max_level_ = Level::info;
 };
 
-// The process's logger on stderr (fd 2), prefixed unless stderr is a terminal.
+// The process's logger on stderr (fd 2), prefixed when stderr is the journal stream.
 Logger& stderr_logger() noexcept;
+
+// `text` with every control character but tab written as \xNN (DEL too), so that text from a
+// file or the command line (a key named "\x1b]0;title\x07") cannot drive the terminal that
+// shows the message. Other bytes, UTF-8 included, pass unchanged.
+std::string escape_control(std::string_view text);
+
+// True when `journal_stream` ($JOURNAL_STREAM, "device:inode") names the file `fd` refers to.
+bool is_journal_stream(int fd, const char* journal_stream) noexcept;
 
 inline void error(std::string_view message) noexcept {
     stderr_logger().write(Level::error, message);

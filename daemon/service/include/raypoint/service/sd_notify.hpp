@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The systemd notify protocol for `raypoint run` as a Type=notify user service: READY=1 once the
 // camera and uinput are open, STATUS= lines for `systemctl --user status`, WATCHDOG=1 from the

@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: MIT
+#include "command_table.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "raypoint/cli/usage_error.hpp"
+#include "raypoint/config/schema.hpp"
+
+namespace raypoint::daemon {
+namespace {
+
+constexpr std::array run_options{
+    OptionSpec{"--camera", "DEVICE", "/dev/videoN, /dev/v4l/by-id/..., or auto (default)"},
+    OptionSpec{"--lock-exposure", "", "lock auto exposure, gain and white balance"},
+    OptionSpec{"--input", "FILE", "a recorded video instead of the camera, at its own pace"},
+    OptionSpec{"--unpaced", "", "with --input: as fast as the core runs"},
+    OptionSpec{"--realtime", "",
+               "with --input: decode the clip first, then replay it from\n"
+               "memory as a YUYV camera would deliver it (the daemon's\n"
+               "own cost, printed at exit and in ctl status)"},
+    OptionSpec{"--duration", "SECONDS", "stop after SECONDS (with --realtime the clip loops)"},
+    OptionSpec{"--sink", "SPEC", "uinput (default), file:PATH (the events as text), null"},
+    OptionSpec{"--control", "PATH", "control socket (default $XDG_RUNTIME_DIR/raypoint.sock)"},
+    OptionSpec{"--no-control", "", "no control socket"},
+};
+constexpr std::array ctl_options{
+    OptionSpec{"--control", "PATH", "control socket (default $XDG_RUNTIME_DIR/raypoint.sock)"},
+    OptionSpec{"--json", "", "status as one JSON object (numbers, true/false, strings)"},
+};
+constexpr std::array track_options{
+    OptionSpec{"--format", "jsonl|csv", "output format (default jsonl)"},
+    OptionSpec{"--annotate", "OUT.mp4", "also write the video with what the tracker saw"},
+    OptionSpec{"--fps", "N",
+               "frame rate for the timestamps (default: the\n"
+               "container's; 30 for an image sequence)"},
+    OptionSpec{"--verbose", "", "say on stderr when and why a target is lost or recovered"},
+};
+constexpr std::array demo_options{
+    OptionSpec{"--scene", "NAME", "scene preset (default nonconvex)"},
+    OptionSpec{"--annotate", "OUT.mp4", "annotated clip (default raypoint-demo.mp4)"},
+};
+constexpr std::array compare_options{
+    OptionSpec{"--out", "FILE", "write the Markdown report to FILE (default: stdout)"},
+};
+constexpr std::array bench_options{
+    OptionSpec{"--peers", "LIST", "camshift,kcf,csrt,mil (default all) or none"},
+    OptionSpec{"--scenes", "LIST",
+               "rendered scenes without CLIP (default ideal,lowlight,\n"
+               "interfering,nonconvex,realworld,fast,pause)"},
+    OptionSpec{"--frames", "N", "at most N frames a clip"},
+    OptionSpec{"--format", "table|markdown|jsonl", "output format (default table)"},
+};
+constexpr std::array print_config_options{
+    OptionSpec{"--defaults", "", "read no configuration file"},
+};
+constexpr std::array settings_options{
+    OptionSpec{"--config", "FILE", "read the settings from an INI file (see print-config)"},
+    OptionSpec{"--preset", "default|paper",
+               "start from the measured defaults or the paper exactly"},
+    OptionSpec{"--estimator", "NAME", "ray|iterative-ray|iterative-ny-ray|raster"},
+    OptionSpec{"--set", "section.key=value", "change one setting (repeatable; see print-config)"},
+};
+constexpr std::array help_options{
+    OptionSpec{"--help", "", "this help, then exit (also -h)"},
+};
+
+// One row a command, in the order `raypoint --help` lists them.
+constexpr std::array commands{
+    CommandSpec{"run", "",
+                "the daemon: webcam in, a virtual pointer out (a systemd user\n"
+                "service: systemctl --user enable --now raypoint). SIGHUP\n"
+                "reloads the configuration; SIGINT and SIGTERM stop it,\n"
+                "releasing every button.",
+                run_options, true},
+    CommandSpec{"ctl", "pause|resume|toggle|recenter|status",
+                "talk to the running daemon over its control socket; pause\n"
+                "closes the camera, resume opens it again, toggle does\n"
+                "whichever applies (for a desktop shortcut)",
+                ctl_options},
+    CommandSpec{"doctor",
+                "",
+                "check the configuration, the webcam, /dev/uinput and the\n"
+                "service, and print the fix for each failure",
+                {}},
+    CommandSpec{"track", "INPUT",
+                "track a recorded video or image sequence (\"frames/%04d.png\"),\n"
+                "one line a frame on stdout",
+                track_options, true},
+    CommandSpec{"demo", "",
+                "render a scene in memory, track it, print the 3D positions and\n"
+                "write an annotated clip",
+                demo_options, true},
+    CommandSpec{"compare-estimators", "", "measure the four estimators (docs/estimators.md)",
+                compare_options, true},
+    CommandSpec{"bench", "[CLIP...]",
+                "time raypoint's core (each estimator) against OpenCV's CamShift,\n"
+                "KCF, CSRT and MIL on the same decoded frames, with accuracy\n"
+                "where a CLIP has truth.jsonl and masks.npz beside it; a CLIP is\n"
+                "a video or a scene folder (default: rendered scenes)",
+                bench_options, true},
+    CommandSpec{"print-config", "",
+                "print the effective configuration as an INI file (the file\n"
+                "raypoint run reads, see check-config, and the options below)",
+                print_config_options, true},
+    CommandSpec{"check-config",
+                "[FILE]",
+                "check a configuration file, or the one raypoint run reads\n"
+                "($XDG_CONFIG_HOME/raypoint/raypoint.ini, then\n"
+                "raypoint/raypoint.ini in $XDG_CONFIG_DIRS)",
+                {}},
+};
+
+// Prints `text`'s lines, the first after `head` padded to `column`, the others indented to it.
+void print_block(std::FILE* out, std::string_view head, std::string_view text, std::size_t column) {
+    std::fwrite(head.data(), 1, head.size(), out);
+    std::size_t used = head.size();
+    if (used + 1 > column) {
+        std::fputs("\n", out);
+        used = 0;
+    }
+    bool first = true;
+    while (true) {
+        const std::size_t end = text.find('\n');
+        const std::string_view line = text.substr(0, end);
+        std::fprintf(out, "%*s%.*s\n", static_cast<int>(column - (first ? used : 0)), "",
+                     static_cast<int>(line.size()), line.data());
+        first = false;
+        if (end == std::string_view::npos) break;
+        text.remove_prefix(end + 1);
+    }
+}
+
+std::string option_head(const OptionSpec& option) {
+    return std::string(option.name) + (option.value.empty() ? "" : " ") + std::string(option.value);
+}
+
+void print_options(std::FILE* out, std::span<const OptionSpec> options, std::size_t indent) {
+    for (const OptionSpec& option : options)
+        print_block(out, std::string(indent, ' ') + option_head(option), option.help, 29);
+}
+
+// Every option `command` accepts: its own, --help, and the settings options when it takes them.
+std::vector<const OptionSpec*> accepted_options(const CommandSpec& command) {
+    std::vector<const OptionSpec*> accepted;
+    for (const auto list : {command.options, std::span<const OptionSpec>(help_options),
+                            command.settings ? std::span<const OptionSpec>(settings_options)
+                                             : std::span<const OptionSpec>()}) {
+        for (const OptionSpec& option : list)
+            accepted.push_back(&option);
+    }
+    return accepted;
+}
+
+}  // namespace
+
+std::span<const CommandSpec> command_table() {
+    return commands;
+}
+
+const CommandSpec* find_command(std::string_view name) {
+    for (const CommandSpec& command : commands)
+        if (command.name == name) return &command;
+    return nullptr;
+}
+
+void print_usage(std::FILE* out) {
+    std::fputs(
+        "usage: raypoint COMMAND [options]\n"
+        "       raypoint COMMAND --help      raypoint --version\n\ncommands:\n",
+        out);
+    std::string with_settings;
+    for (const CommandSpec& command : commands) {
+        std::string head = "  " + std::string(command.name);
+        if (!command.operands.empty()) head += " " + std::string(command.operands);
+        print_block(out, head, command.summary, 19);
+        print_options(out, command.options, 6);
+        if (command.settings)
+            with_settings += (with_settings.empty() ? "" : ", ") + std::string(command.name);
+    }
+    std::fprintf(out, "\noptions for %s:\n", with_settings.c_str());
+    print_options(out, settings_options, 2);
+    std::fputs(
+        "\nExit status: 0 on success, 1 when an input, a device or the settings fail,\n"
+        "2 for a wrong command line.\n",
+        out);
+}
+
+void print_command_help(const CommandSpec& command, std::FILE* out) {
+    std::fprintf(out, "usage: raypoint %.*s%s%.*s%s\n\n", static_cast<int>(command.name.size()),
+                 command.name.data(), command.operands.empty() ? "" : " ",
+                 static_cast<int>(command.operands.size()), command.operands.data(),
+                 command.options.empty() && !command.settings ? "" : " [options]");
+    std::fprintf(out, "%.*s\n\noptions:\n", static_cast<int>(command.summary.size()),
+                 command.summary.data());
+    print_options(out, command.options, 2);
+    if (command.settings) print_options(out, settings_options, 2);
+    print_options(out, help_options, 2);
+}
+
+std::string_view closest_name(std::string_view wanted,
+                              std::span<const std::string_view> candidates) {
+    std::string_view best;
+    std::size_t best_distance = 0;
+    for (const std::string_view candidate : candidates) {
+        const std::size_t distance = config::edit_distance(wanted, candidate);
+        if (best.empty() || distance < best_distance) {
+            best = candidate;
+            best_distance = distance;
+        }
+    }
+    // A third of the letters wrong is a typo; more is another word.
+    const std::size_t limit = std::min<std::size_t>(3, wanted.size() / 3);
+    return best_distance <= limit ? best : std::string_view();
+}
+
+std::vector<std::string> normalize_options(const CommandSpec& command,
+                                           std::span<const std::string_view> args) {
+    std::vector<std::string> out;
+    bool options_end = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view arg = args[i];
+        if (options_end || !arg.starts_with("--")) {
+            out.emplace_back(arg);
+            continue;
+        }
+        if (arg == "--") {
+            options_end = true;
+            continue;
+        }
+        const std::size_t equals = arg.find('=');
+        const std::string_view name = arg.substr(0, equals);
+        const OptionSpec* option = nullptr;
+        std::vector<std::string_view> names;
+        for (const OptionSpec* known : accepted_options(command)) {
+            if (known->name == name) option = known;
+            names.push_back(known->name);
+        }
+        if (option == nullptr) {
+            const std::string_view near = closest_name(name, names);
+            throw UsageError(std::string(name) + ": unknown option" +
+                             (near.empty() ? "" : " (did you mean " + std::string(near) + "?)") +
+                             "; see raypoint " + std::string(command.name) + " --help");
+        }
+        out.emplace_back(name);
+        if (option->value.empty()) {
+            if (equals != std::string_view::npos)
+                throw UsageError(std::string(name) + ": takes no value");
+        } else if (equals != std::string_view::npos) {
+            out.emplace_back(arg.substr(equals + 1));
+        } else if (i + 1 < args.size()) {
+            out.emplace_back(args[++i]);
+        } else {
+            throw UsageError(std::string(name) + ": missing " + std::string(option->value));
+        }
+    }
+    return out;
+}
+
+}  // namespace raypoint::daemon
