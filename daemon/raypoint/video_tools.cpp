@@ -13,8 +13,8 @@ namespace raypoint::daemon {
 
 bool needs_video_tools(std::span<const std::string_view> args) {
     if (args.empty()) return false;
-    constexpr std::array<std::string_view, 4> video_commands{"track", "demo", "compare-estimators",
-                                                             "bench"};
+    constexpr std::array<std::string_view, 7> video_commands{
+        "track", "demo", "compare-estimators", "bench", "plot", "preview", "setup"};
     const std::string_view command = args.front();
     if (std::find(video_commands.begin(), video_commands.end(), command) != video_commands.end()) {
         return true;

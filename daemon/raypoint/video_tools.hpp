@@ -8,7 +8,7 @@
 
 namespace raypoint::daemon {
 
-// True for track, demo, compare-estimators, bench, and run with --input.
+// True for track, demo, compare-estimators, bench, plot, preview, setup, and run with --input.
 bool needs_video_tools(std::span<const std::string_view> args);
 
 // Replaces this process by raypoint-tools with the same arguments. Returns only on failure,

@@ -43,6 +43,21 @@ commands:
       --fps N                frame rate for the timestamps (default: the
                              container's; 30 for an image sequence)
       --verbose              say on stderr when and why a target is lost or recovered
+      --plot OUT.png         also plot x, y, z, the state and the clicks over time
+  plot TRACK.jsonl -o OUT.png
+                   plot track's output: x, y, z, the state band, clicks
+      --events FILE          clicks from a file sink's events (run --sink file:FILE)
+  preview          a window with the camera and what the tracker sees, trackbars
+                   for the most-tuned settings; keys: v edges/difference, space
+                   pause, w write them into the INI file, q quit. Pauses a running
+                   daemon (ctl pause) while it has the camera
+      --camera DEVICE | --input CLIP
+      --headless             no window; with --frames N and --screenshot OUT.png
+  setup            guided first run: measures hand size, motion range and push
+                   depth, proposes [pointer] gain, the active region and [click]
+                   press_rise/release_rise, lets you try them, writes the INI on
+                   yes (--headless: when the try-it clicks once a push)
+      --camera DEVICE | --input CLIP | --headless | --screen-width PIXELS
   demo             render a scene in memory, track it, print the 3D positions and
                    write an annotated clip
       --scene NAME           scene preset (default nonconvex)
@@ -64,7 +79,8 @@ commands:
                              reads ($XDG_CONFIG_HOME/raypoint/raypoint.ini, then
                              raypoint/raypoint.ini in $XDG_CONFIG_DIRS)
 
-options for run, track, demo, compare-estimators, bench and print-config:
+options for run, track, demo, compare-estimators, bench, preview, setup and
+print-config:
   --config FILE              read the settings from an INI file (see print-config)
   --preset default|paper     start from the measured defaults or the paper exactly
   --estimator NAME           ray|iterative-ray|iterative-ny-ray|raster
