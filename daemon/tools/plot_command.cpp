@@ -16,7 +16,10 @@ namespace raypoint::daemon {
 void write_png(const cv::Mat& picture, const std::string& path) {
     bool written = false;
     try {
-        written = !picture.empty() && cv::imwrite(path, picture, {cv::IMWRITE_PNG_COMPRESSION, 9});
+        // The format by the name's extension; JPEG at 80 keeps a screenshot to a few tens of kB.
+        written = !picture.empty() &&
+                  cv::imwrite(path, picture,
+                              {cv::IMWRITE_PNG_COMPRESSION, 9, cv::IMWRITE_JPEG_QUALITY, 80});
     } catch (const cv::Exception&) {
         written = false;
     }

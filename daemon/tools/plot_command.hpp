@@ -13,7 +13,8 @@ namespace raypoint::daemon {
 
 int plot_command(std::span<const std::string_view> args);
 
-// Writes `picture` as PNG; throws InputError naming `path` when it cannot.
+// Writes `picture` as PNG (or JPEG, by the name's extension); throws InputError naming `path` when
+// it cannot.
 void write_png(const cv::Mat& picture, const std::string& path);
 
 // Draws `log` and writes the PNG; throws InputError naming `path` when it cannot be written.

@@ -46,6 +46,16 @@ bool parse_preview_loop_option(std::span<const std::string_view> args, std::size
         options.frames = static_cast<int>(frames);
     } else if (args[i] == "--screenshot") {
         options.screenshot = option_value(args, i);
+    } else if (args[i] == "--view") {
+        const std::string_view value = option_value(args, i);
+        if (value == "edges") {
+            options.view = view::BackgroundView::edges;
+        } else if (value == "difference") {
+            options.view = view::BackgroundView::difference;
+        } else {
+            throw UsageError("--view " + std::string(value) +
+                             ": unknown view (allowed: edges|difference)");
+        }
     } else {
         return false;
     }

@@ -28,7 +28,7 @@ struct PreviewInputOptions {
 // args[i] is none of them.
 bool parse_preview_input_option(std::span<const std::string_view> args, std::size_t& i,
                                 PreviewInputOptions& options);
-// --headless, --frames N, --screenshot PNG.
+// --headless, --frames N, --screenshot FILE, --view edges|difference.
 bool parse_preview_loop_option(std::span<const std::string_view> args, std::size_t& i,
                                PreviewLoopOptions& options);
 

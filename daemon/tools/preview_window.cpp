@@ -65,8 +65,8 @@ void apply_trackbars(const std::string& window, view::PreviewSession& session) {
         for (const Tunable& tunable : tunable_list) {
             const config::Key* key = config::find_key(tunable.section, tunable.name);
             cv::setTrackbarPos(tunable.label, window,
-                               static_cast<int>(std::lround(
-                                   current_value(*key, session.config()) * tunable.scale)));
+                               static_cast<int>(std::lround(current_value(*key, session.config()) *
+                                                            tunable.scale)));
         }
         return;
     }
@@ -91,6 +91,7 @@ int run_preview_loop(FrameSource& source, view::PreviewSession& session,
     stop_requested = false;
     const auto previous_int = std::signal(SIGINT, on_stop_signal);
     const auto previous_term = std::signal(SIGTERM, on_stop_signal);
+    session.set_view(options.view);
     Trackbars bars;
     if (!options.headless) {
         cv::namedWindow(options.title, cv::WINDOW_AUTOSIZE);
@@ -100,8 +101,8 @@ int run_preview_loop(FrameSource& source, view::PreviewSession& session,
             cv::createTrackbar(tunable.label, options.title, nullptr, tunable.max, on_trackbar,
                                &bars);
             cv::setTrackbarPos(tunable.label, options.title,
-                               static_cast<int>(std::lround(
-                                   current_value(*key, session.config()) * tunable.scale)));
+                               static_cast<int>(std::lround(current_value(*key, session.config()) *
+                                                            tunable.scale)));
         }
         bars.changed = false;
         std::printf("raypoint preview: v edges/difference, space pause, w write %s, q quit\n",

@@ -30,7 +30,8 @@ std::vector<const config::Key*> tunable_keys();
 struct PreviewLoopOptions {
     bool headless = false;
     std::optional<int> frames;  // stop after this many frames
-    std::string screenshot;     // PNG of the last picture, written at the end
+    std::string screenshot;     // the last picture (PNG, or JPEG by its name), at the end
+    view::BackgroundView view = view::BackgroundView::edges;
     std::filesystem::path ini;  // the file the save key writes
     std::string title = "raypoint preview";
 };

@@ -38,8 +38,8 @@ void draw_prompt(cv::Mat& picture, const char* text) {
 
 const std::vector<const config::Key*>& proposed_keys() {
     static const std::vector<const config::Key*> keys{
-        config::find_key("pointer", "gain"),         config::find_key("pointer", "active_left"),
-        config::find_key("pointer", "active_right"), config::find_key("pointer", "active_top"),
+        config::find_key("pointer", "gain"),          config::find_key("pointer", "active_left"),
+        config::find_key("pointer", "active_right"),  config::find_key("pointer", "active_top"),
         config::find_key("pointer", "active_bottom"), config::find_key("click", "press_rise"),
         config::find_key("click", "release_rise")};
     return keys;
@@ -53,7 +53,8 @@ void measure(FrameSource& source, view::PreviewSession& session, view::SetupMeas
     while (!(options.frames && frames >= *options.frames)) {
         const Capture capture = source.next(1000);
         if (capture.status == CaptureStatus::ended) break;
-        if (capture.status == CaptureStatus::lost) throw InputError("camera lost: " + capture.reason);
+        if (capture.status == CaptureStatus::lost)
+            throw InputError("camera lost: " + capture.reason);
         if (capture.status != CaptureStatus::frame) continue;
         session.process(capture.frame);
         ++frames;
@@ -77,10 +78,11 @@ void measure(FrameSource& source, view::PreviewSession& session, view::SetupMeas
 // The proposal through the pointer once more on a second pass of a clip: the presses it makes.
 void print_proposal(const view::SetupProposal& p) {
     const view::SetupFigures& f = p.figures;
-    std::printf("measured: %d tracked frames; hand %.4f of the frame; centroid range x %.2f..%.2f,"
-                " y %.2f..%.2f; %zu pushes, depth %.3f (rise of sqrt(area))\n",
-                f.tracked_frames, f.hand_area, f.left, f.right, f.top, f.bottom,
-                f.push_rises.size(), f.push_depth);
+    std::printf(
+        "measured: %d tracked frames; hand %.4f of the frame; centroid range x %.2f..%.2f,"
+        " y %.2f..%.2f; %zu pushes, depth %.3f (rise of sqrt(area))\n",
+        f.tracked_frames, f.hand_area, f.left, f.right, f.top, f.bottom, f.push_rises.size(),
+        f.push_depth);
     std::printf("proposed:\n");
     for (const config::Key* key : proposed_keys()) {
         std::printf("  [%s] %s = %s\n", std::string(key->section).c_str(),

@@ -17,7 +17,8 @@ namespace {
 
 std::vector<const Key*> keys(std::initializer_list<std::pair<const char*, const char*>> names) {
     std::vector<const Key*> out;
-    for (const auto& [section, name] : names) out.push_back(find_key(section, name));
+    for (const auto& [section, name] : names)
+        out.push_back(find_key(section, name));
     return out;
 }
 

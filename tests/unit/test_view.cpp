@@ -54,11 +54,11 @@ TEST(Plot, EachSeriesIsDrawnWhereItsValueIsAndNowhereElse) {
         for (const auto& [value, row, panel, color] :
              {std::tuple{s.position.x, layout.xy_row(s.position.x), layout.xy_panel, plot_x_color},
               std::tuple{s.position.y, layout.xy_row(s.position.y), layout.xy_panel, plot_y_color},
-              std::tuple{s.position.z, layout.z_row(s.position.z), layout.z_panel,
-                         plot_z_color}}) {
+              std::tuple{s.position.z, layout.z_row(s.position.z), layout.z_panel, plot_z_color}}) {
             const auto rows = rows_with(image, column, panel, color);
             ASSERT_FALSE(rows.empty()) << "t " << s.t << " value " << value;
-            for (const int y : rows) EXPECT_NEAR(y, row, 3) << "t " << s.t << " value " << value;
+            for (const int y : rows)
+                EXPECT_NEAR(y, row, 3) << "t " << s.t << " value " << value;
         }
     }
     // No position while searching: no curve there.
@@ -82,8 +82,7 @@ TEST(Plot, TheStateBandAndTheClicksAreColouredByTime) {
     EXPECT_EQ(image.at<cv::Vec3b>(layout.z_panel.y + 2, press), bgr(plot_press_color));
     EXPECT_EQ(image.at<cv::Vec3b>(layout.xy_row(0.45), layout.column(2.5)),
               bgr(plot_release_color));
-    EXPECT_NE(image.at<cv::Vec3b>(layout.xy_row(0.45), layout.column(3.0)),
-              bgr(plot_press_color));
+    EXPECT_NE(image.at<cv::Vec3b>(layout.xy_row(0.45), layout.column(3.0)), bgr(plot_press_color));
 }
 
 TEST(PreviewStatus, StateTextMatchesOnlyItsOwnState) {
@@ -99,8 +98,8 @@ TEST(PreviewStatus, StateTextMatchesOnlyItsOwnState) {
             if (asked == drawn) {
                 EXPECT_GT(match, 0.99) << core::to_string(drawn);
             } else {
-                EXPECT_LT(match, 0.5) << core::to_string(drawn) << " read as "
-                                      << core::to_string(asked);
+                EXPECT_LT(match, 0.5)
+                    << core::to_string(drawn) << " read as " << core::to_string(asked);
             }
         }
     }

@@ -49,10 +49,9 @@ int check_screenshot(const cv::Mat& shot, double cx, double cy, std::string_view
         std::printf("FAIL: the centroid marker is more than 3 px from the truth\n");
         return 1;
     }
-    for (const auto state :
-         {core::TrackerState::initializing, core::TrackerState::searching,
-          core::TrackerState::tracking, core::TrackerState::validating,
-          core::TrackerState::recovering}) {
+    for (const auto state : {core::TrackerState::initializing, core::TrackerState::searching,
+                             core::TrackerState::tracking, core::TrackerState::validating,
+                             core::TrackerState::recovering}) {
         if (core::to_string(state) != state_name) continue;
         const double match = view::state_text_match(shot, rows, state);
         std::printf("state text '%s': match %.3f\n", std::string(state_name).c_str(), match);
@@ -93,8 +92,8 @@ int check_plot(const cv::Mat& plot, const std::string& track) {
         missed += miss(layout.xy_row(sample.position.y), view::plot_y_color, "y");
         missed += miss(layout.z_row(sample.position.z), view::plot_z_color, "z");
         const cv::Scalar band = view::state_color(sample.state);
-        const cv::Vec3b b = plot.at<cv::Vec3b>(layout.state_band.y + layout.state_band.height / 2,
-                                               column);
+        const cv::Vec3b b =
+            plot.at<cv::Vec3b>(layout.state_band.y + layout.state_band.height / 2, column);
         checked += 1;
         if (b != cv::Vec3b(static_cast<uchar>(band[0]), static_cast<uchar>(band[1]),
                            static_cast<uchar>(band[2]))) {

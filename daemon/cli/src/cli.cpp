@@ -53,6 +53,7 @@ commands:
                    daemon (ctl pause) while it has the camera
       --camera DEVICE | --input CLIP
       --headless             no window; with --frames N and --screenshot OUT.png
+      --view edges|difference  what is drawn under the markers (key v)
   setup            guided first run: measures hand size, motion range and push
                    depth, proposes [pointer] gain, the active region and [click]
                    press_rise/release_rise, lets you try them, writes the INI on

@@ -16,6 +16,7 @@ constexpr int state_font = cv::FONT_HERSHEY_SIMPLEX;
 constexpr double state_scale = 0.7;
 constexpr int state_thickness = 2;
 const cv::Scalar panel_ink{235, 235, 235};
+constexpr int min_picture_width = 560;  // the status lines' width
 
 std::string upper(std::string_view text) {
     std::string out(text);
@@ -54,8 +55,8 @@ void draw_state_text(cv::Mat& image, cv::Point origin, core::TrackerState state)
 double state_text_match(const cv::Mat& picture, int frame_rows, core::TrackerState state) {
     const cv::Point origin = state_text_origin(frame_rows);
     // The box every state's name fits in.
-    const cv::Rect box = cv::Rect(origin.x - 2, origin.y - 22, 190, 30) &
-                         cv::Rect(0, 0, picture.cols, picture.rows);
+    const cv::Rect box =
+        cv::Rect(origin.x - 2, origin.y - 22, 190, 30) & cv::Rect(0, 0, picture.cols, picture.rows);
     if (box.area() == 0) return 0.0;
     cv::Mat expected(picture.size(), CV_8UC3, cv::Scalar(0, 0, 0));
     draw_state_text(expected, origin, state);
@@ -98,9 +99,8 @@ void PreviewSession::process(const core::FrameView& frame) {
     }
     const auto start = std::chrono::steady_clock::now();
     last_ = tracker_->process(frame);
-    const auto spent = std::chrono::duration<double, std::micro>(
-                           std::chrono::steady_clock::now() - start)
-                           .count();
+    const auto spent =
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
     microseconds_ = average(microseconds_, spent);
     if (previous_ >= 0 && frame.timestamp > previous_) {
         fps_ = average(fps_, 1e6 / static_cast<double>(frame.timestamp - previous_));
@@ -115,9 +115,9 @@ void PreviewSession::process(const core::FrameView& frame) {
         if (change.pressed && change.button == core::Button::left) ++presses_;
     }
     ++frames_;
-    const cv::Mat pixels(frame.height, frame.width,
-                         frame.format == core::PixelFormat::bgr ? CV_8UC3 : CV_8UC2,
-                         const_cast<std::uint8_t*>(frame.data), static_cast<std::size_t>(frame.stride));
+    const cv::Mat pixels(
+        frame.height, frame.width, frame.format == core::PixelFormat::bgr ? CV_8UC3 : CV_8UC2,
+        const_cast<std::uint8_t*>(frame.data), static_cast<std::size_t>(frame.stride));
     if (frame.format == core::PixelFormat::bgr) {
         pixels.copyTo(bgr_);
     } else {
@@ -127,12 +127,17 @@ void PreviewSession::process(const core::FrameView& frame) {
 
 cv::Mat PreviewSession::render() const {
     if (bgr_.empty()) return {};
-    cv::Mat picture(bgr_.rows + status_panel_height, bgr_.cols, CV_8UC3, cv::Scalar(32, 32, 32));
-    cv::Mat top = picture(cv::Rect(0, 0, bgr_.cols, bgr_.rows));
-    bgr_.copyTo(top);
+    // A small camera picture (320x240) is shown twice as large, so the status lines fit and the
+    // markers stay readable; markers are drawn at the shown size.
+    const int scale = bgr_.cols < min_picture_width ? 2 : 1;
+    const cv::Size shown(bgr_.cols * scale, bgr_.rows * scale);
+    cv::Mat picture(shown.height + status_panel_height, shown.width, CV_8UC3,
+                    cv::Scalar(32, 32, 32));
+    cv::Mat top = picture(cv::Rect(cv::Point(0, 0), shown));
+    cv::resize(bgr_, top, shown, 0, 0, cv::INTER_NEAREST);
     draw_tracker_view(top, *tracker_, last_, view_, config_.core.preprocess.edge_threshold);
 
-    const int y0 = bgr_.rows;
+    const int y0 = shown.height;
     draw_state_text(picture, state_text_origin(y0), last_.state);
     std::string line = format("%.1f fps", fps_) + format("  %.0f us/frame", microseconds_);
     line += last_.area ? format("  area %.4f", *last_.area) : std::string("  area -");
@@ -146,10 +151,10 @@ cv::Mat PreviewSession::render() const {
     if (pointer_ && click.mode == core::ClickMode::depth) {
         const core::ClickMachine& machine = pointer_->click_machine();
         second = "click " + std::string(core::to_string(machine.state())) +
-                 format("  rise %+.3f", machine.rise()) + format(" / press %.2f", click.press_rise) +
-                 "   " + second;
+                 format("  rise %+.3f", machine.rise()) +
+                 format(" / press %.2f", click.press_rise) + "   " + second;
         // The bar: 0 .. 1.5 x press_rise, ticks at release_rise and press_rise.
-        const cv::Rect bar(10, y0 + 50, bgr_.cols - 20, 10);
+        const cv::Rect bar(10, y0 + 50, shown.width - 20, 10);
         const double full = 1.5 * std::max(click.press_rise, 1e-3);
         const auto at = [&](double rise) {
             return bar.x + cvRound(std::clamp(rise / full, 0.0, 1.0) * (bar.width - 1));

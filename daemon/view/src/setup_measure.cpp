@@ -21,8 +21,10 @@ constexpr int min_tracked_frames = 30;
 
 double percentile(std::vector<double> values, double p) {
     if (values.empty()) return 0.0;
-    const auto at = static_cast<std::size_t>(std::lround(p * static_cast<double>(values.size() - 1)));
-    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(at), values.end());
+    const auto at =
+        static_cast<std::size_t>(std::lround(p * static_cast<double>(values.size() - 1)));
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(at),
+                     values.end());
     return values[at];
 }
 
