@@ -71,6 +71,20 @@ presses=$(grep -c "EV_KEY BTN_LEFT 1" "$work/ev.txt")
 # The plot takes the clicks from those events.
 timeout 60 "$raypoint" plot "$work/push.jsonl" --events "$work/ev.txt" -o "$work/push.png" || fail "plot --events exited $?"
 
+# With a daemon running, preview on a camera pauses it first and resumes it however it ends:
+# here the camera does not exist.
+"$raypoint" run --input "$push" --sink null 2>"$work/daemon.log" &
+daemon_pid=$!
+trap 'kill "$daemon_pid" 2>/dev/null; rm -rf "$work"' EXIT
+for _ in $(seq 50); do [ -S "$work/raypoint.sock" ] && break; sleep 0.1; done
+timeout 30 "$raypoint" preview --camera "$work/video9" --headless --frames 1 2>"$work/err.txt" && fail "preview on a missing camera succeeded"
+grep -q "paused the running daemon" "$work/err.txt" || fail "no pause: $(cat "$work/err.txt")"
+grep -q "$work/video9" "$work/err.txt" || fail "the camera error does not name it: $(cat "$work/err.txt")"
+grep -q "resumed the daemon" "$work/err.txt" || fail "no resume: $(cat "$work/err.txt")"
+"$raypoint" ctl status | grep -q '^paused: no' || fail "the daemon stayed paused"
+kill -TERM "$daemon_pid"
+wait "$daemon_pid"
+
 # Bad input: one line, the right exit code.
 expect_error 1 "$work/missing.jsonl: cannot open" plot "$work/missing.jsonl" -o "$work/x.png"
 expect_error 2 "missing -o OUT.png" plot "$work/track.jsonl"

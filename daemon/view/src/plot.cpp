@@ -7,6 +7,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "labels.hpp"
+
 namespace raypoint::view {
 namespace {
 
@@ -20,14 +22,10 @@ constexpr int axis_height = 34;  // time labels under the band
 const cv::Scalar ink{40, 40, 40};
 const cv::Scalar grid{225, 225, 225};
 
-std::string format(const char* pattern, double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, pattern, value);
-    return text;
-}
+using detail::format_number;
 
 void label(cv::Mat& image, const std::string& text, cv::Point at, const cv::Scalar& color) {
-    cv::putText(image, text, at, cv::FONT_HERSHEY_SIMPLEX, 0.42, color, 1, cv::LINE_AA);
+    detail::put_label(image, text, at, color, 0.42);
 }
 
 // One series as a polyline, broken wherever the track has no position.
@@ -123,7 +121,7 @@ cv::Mat draw_plot(const TrackLog& log, const PlotLayout& layout) {
         for (const cv::Rect& panel : {layout.xy_panel, layout.z_panel}) {
             cv::line(image, {column, panel.y}, {column, panel.br().y - 1}, grid);
         }
-        label(image, format(step < 1 ? "%.1f" : "%.0f", t),
+        label(image, format_number(step < 1 ? "%.1f" : "%.0f", t),
               {column - 8, layout.state_band.br().y + 16}, ink);
     }
     label(image, "t (s)", {layout.state_band.br().x - 30, layout.state_band.br().y + 30}, ink);
@@ -161,8 +159,8 @@ cv::Mat draw_plot(const TrackLog& log, const PlotLayout& layout) {
     }
     label(image, "1", {layout.xy_panel.x - 14, layout.xy_row(1.0) + 5}, ink);
     label(image, "0", {layout.xy_panel.x - 14, layout.xy_row(0.0) + 5}, ink);
-    label(image, format("%+.2f", layout.z_high), {4, layout.z_row(layout.z_high) + 10}, ink);
-    label(image, format("%+.2f", layout.z_low), {4, layout.z_row(layout.z_low)}, ink);
+    label(image, format_number("%+.2f", layout.z_high), {4, layout.z_row(layout.z_high) + 10}, ink);
+    label(image, format_number("%+.2f", layout.z_low), {4, layout.z_row(layout.z_low)}, ink);
     label(image, "state", {6, layout.state_band.y + 16}, ink);
 
     // Legend on top.

@@ -7,6 +7,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "labels.hpp"
 #include "raypoint/view/plot.hpp"
 
 namespace raypoint::view {
@@ -26,14 +27,10 @@ std::string upper(std::string_view text) {
     return out;
 }
 
-std::string format(const char* pattern, double value) {
-    char text[48];
-    std::snprintf(text, sizeof text, pattern, value);
-    return text;
-}
+using detail::format_number;
 
 void text(cv::Mat& image, const std::string& line, cv::Point at, const cv::Scalar& color) {
-    cv::putText(image, line, at, cv::FONT_HERSHEY_SIMPLEX, 0.5, color, 1, cv::LINE_AA);
+    detail::put_label(image, line, at, color, 0.5);
 }
 
 // 0.05 per second of frames: a steady figure that still follows a change within a second.
@@ -139,9 +136,11 @@ cv::Mat PreviewSession::render() const {
 
     const int y0 = shown.height;
     draw_state_text(picture, state_text_origin(y0), last_.state);
-    std::string line = format("%.1f fps", fps_) + format("  %.0f us/frame", microseconds_);
-    line += last_.area ? format("  area %.4f", *last_.area) : std::string("  area -");
-    line += last_.has_position ? format("  z %+.3f", last_.position.z) : std::string("  z -");
+    std::string line =
+        format_number("%.1f fps", fps_) + format_number("  %.0f us/frame", microseconds_);
+    line += last_.area ? format_number("  area %.4f", *last_.area) : std::string("  area -");
+    line +=
+        last_.has_position ? format_number("  z %+.3f", last_.position.z) : std::string("  z -");
     text(picture, line, {200, y0 + 24}, panel_ink);
 
     // The click machine: its state, the rise of sqrt(area) over the baseline against press_rise.
@@ -151,8 +150,8 @@ cv::Mat PreviewSession::render() const {
     if (pointer_ && click.mode == core::ClickMode::depth) {
         const core::ClickMachine& machine = pointer_->click_machine();
         second = "click " + std::string(core::to_string(machine.state())) +
-                 format("  rise %+.3f", machine.rise()) +
-                 format(" / press %.2f", click.press_rise) + "   " + second;
+                 format_number("  rise %+.3f", machine.rise()) +
+                 format_number(" / press %.2f", click.press_rise) + "   " + second;
         // The bar: 0 .. 1.5 x press_rise, ticks at release_rise and press_rise.
         const cv::Rect bar(10, y0 + 50, shown.width - 20, 10);
         const double full = 1.5 * std::max(click.press_rise, 1e-3);
