@@ -6,6 +6,7 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "raypoint/config/ini_file.hpp"
@@ -80,12 +81,17 @@ std::string update_ini_text(std::string_view text, const Config& config,
         if (!span) continue;
         for (std::size_t k = 0; k < keys.size(); ++k) {
             if (keys[k]->section != section || keys[k]->name != span->key) continue;
-            const std::string value = keys[k]->format(config);
             // A comment right after the value keeps one space before it.
-            const bool comment = span->end < line.size() && trim(line.substr(span->end)).size();
-            line = line.substr(0, span->begin) + value +
-                   (comment ? " " + std::string(trim(line.substr(span->end))) : std::string());
+            std::string changed = line.substr(0, span->begin);
+            changed += keys[k]->format(config);
+            const std::string_view comment = trim(std::string_view(line).substr(span->end));
+            if (!comment.empty()) {
+                changed += ' ';
+                changed += comment;
+            }
+            line = std::move(changed);  // `span` pointed into the old text: done with this line
             done[k] = true;
+            break;
         }
     }
     // Missing keys: after the last setting of their section, or in a new section at the end.

@@ -81,6 +81,7 @@ std::span<const Tunable> tunables() {
 
 std::vector<const config::Key*> tunable_keys() {
     std::vector<const config::Key*> keys;
+    keys.reserve(tunable_list.size());
     for (const Tunable& tunable : tunable_list)
         keys.push_back(config::find_key(tunable.section, tunable.name));
     return keys;

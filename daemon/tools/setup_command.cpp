@@ -133,6 +133,7 @@ int setup_command(std::span<const std::string_view> args) {
     view::PreviewSession trial(proposal->config);
     PreviewLoopOptions try_loop = loop;
     try_loop.title = "raypoint setup: try it (q when done)";
+    try_loop.ini = ini;
     if (!loop.headless) std::printf("try it: push to click; q closes the window\n");
     run_preview_loop(again.frames(), trial, try_loop);
     const std::size_t pushes = proposal->figures.push_rises.size();

@@ -1,6 +1,6 @@
 // raypoint-tools: every raypoint command, including those that read and write video files
-// (track, demo, compare-estimators, bench, run --input, plot) or open a window (preview). `raypoint` runs it for them
-// (video_tools.hpp); it is installed in libexec, not on $PATH.
+// (track, demo, compare-estimators, bench, run --input, plot) or open a window (preview, setup).
+// `raypoint` runs it for them (video_tools.hpp); it is installed in libexec, not on $PATH.
 
 #include "bench_command.hpp"
 #include "compare_command.hpp"
