@@ -18,6 +18,7 @@ constexpr double state_scale = 0.7;
 constexpr int state_thickness = 2;
 const cv::Scalar panel_ink{235, 235, 235};
 constexpr int min_picture_width = 560;  // the status lines' width
+constexpr core::Timestamp recovery_hold_us = 500'000;
 
 std::string upper(std::string_view text) {
     std::string out(text);
@@ -93,6 +94,7 @@ void PreviewSession::process(const core::FrameView& frame) {
         tracker_ = std::make_unique<core::Tracker>(config_.core);
         pointer_.reset();
         restart_ = false;
+        recovery_from_.reset();
     }
     const auto start = std::chrono::steady_clock::now();
     last_ = tracker_->process(frame);
@@ -106,6 +108,10 @@ void PreviewSession::process(const core::FrameView& frame) {
     if (!pointer_) {
         pointer_.emplace(config_.core.pointer,
                          static_cast<double>(frame.width) / static_cast<double>(frame.height));
+    }
+    if (last_.recovery_from) {
+        recovery_from_ = last_.recovery_from;
+        recovery_at_ = last_.timestamp;
     }
     const core::PointerCommand command = pointer_->update(last_);
     for (const core::ButtonChange& change : command.button_changes()) {
@@ -132,7 +138,14 @@ cv::Mat PreviewSession::render() const {
                     cv::Scalar(32, 32, 32));
     cv::Mat top = picture(cv::Rect(cv::Point(0, 0), shown));
     cv::resize(bgr_, top, shown, 0, 0, cv::INTER_NEAREST);
-    draw_tracker_view(top, *tracker_, last_, view_, config_.core.preprocess.edge_threshold);
+    // RECOVERING runs within one frame: its points stay drawn for recovery_hold_us of frame
+    // time, long enough to see in a live window.
+    core::FrameResult shown_result = last_;
+    if (!shown_result.recovery_from && recovery_from_ &&
+        last_.timestamp - recovery_at_ <= recovery_hold_us) {
+        shown_result.recovery_from = recovery_from_;
+    }
+    draw_tracker_view(top, *tracker_, shown_result, view_, config_.core.preprocess.edge_threshold);
 
     const int y0 = shown.height;
     draw_state_text(picture, state_text_origin(y0), last_.state);

@@ -67,6 +67,8 @@ class PreviewSession {
     double fps_ = 0.0;           // from the frames' timestamps, averaged
     double microseconds_ = 0.0;  // the core's time a frame, averaged
     core::Timestamp previous_ = -1;
+    std::optional<cv::Point2d> recovery_from_;  // the last frame that ran RECOVERING
+    core::Timestamp recovery_at_ = 0;
     int presses_ = 0;
     int frames_ = 0;
 };
