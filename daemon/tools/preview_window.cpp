@@ -151,10 +151,15 @@ int run_preview_loop(FrameSource& source, view::PreviewSession& session,
                 session.set_paused(!session.paused());
                 break;
             case 'w': {
+                // A file that cannot be written is said, and the preview goes on.
                 const auto keys = tunable_keys();
-                config::write_ini_values(options.ini, session.config(), keys);
-                std::printf("raypoint preview: wrote %zu settings to %s\n", keys.size(),
-                            options.ini.c_str());
+                try {
+                    config::write_ini_values(options.ini, session.config(), keys);
+                    std::printf("raypoint preview: wrote %zu settings to %s\n", keys.size(),
+                                options.ini.c_str());
+                } catch (const std::exception& e) {
+                    std::printf("raypoint preview: not written: %s\n", e.what());
+                }
                 std::fflush(stdout);
                 break;
             }

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include <opencv2/highgui.hpp>
@@ -113,12 +114,14 @@ int setup_command(std::span<const std::string_view> args) {
         }
     }
     const std::filesystem::path ini = ini_to_write(args);
+    // One camera (and one pause of a running daemon) for both steps; a clip is opened again
+    // for the try-it, from its start.
+    auto source = std::make_unique<PreviewInput>(input, start, loop.headless);
     std::optional<view::SetupProposal> proposal;
     {
-        PreviewInput source(input, start, loop.headless);
         view::PreviewSession session(start);
         view::SetupMeasure measured;
-        measure(source.frames(), session, measured, loop);
+        measure(source->frames(), session, measured, loop);
         proposal = measured.propose(start, screen_width);
         if (!proposal) {
             throw InputError("the hand was tracked for " +
@@ -129,13 +132,16 @@ int setup_command(std::span<const std::string_view> args) {
     print_proposal(*proposal);
 
     // Try it: the proposal on the input again (a clip from its start, or the live camera).
-    PreviewInput again(input, proposal->config, loop.headless);
+    if (!input.clip.empty()) {
+        source.reset();
+        source = std::make_unique<PreviewInput>(input, proposal->config, loop.headless);
+    }
     view::PreviewSession trial(proposal->config);
     PreviewLoopOptions try_loop = loop;
     try_loop.title = "raypoint setup: try it (q when done)";
     try_loop.ini = ini;
     if (!loop.headless) std::printf("try it: push to click; q closes the window\n");
-    run_preview_loop(again.frames(), trial, try_loop);
+    run_preview_loop(source->frames(), trial, try_loop);
     const std::size_t pushes = proposal->figures.push_rises.size();
     std::printf("try it: %d clicks (%zu pushes measured)\n", trial.presses(), pushes);
 
