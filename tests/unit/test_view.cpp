@@ -7,8 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include "raypoint/config/schema.hpp"
 #include "raypoint/view/plot.hpp"
 #include "raypoint/view/preview_session.hpp"
+#include "raypoint/view/setup_measure.hpp"
 
 namespace raypoint::view {
 namespace {
@@ -103,6 +105,58 @@ TEST(PreviewStatus, StateTextMatchesOnlyItsOwnState) {
             }
         }
     }
+}
+
+// 30 fps: 2 s still at x 0.3, 3 s moving to x 0.7 and back, then two pushes (sqrt(area) up
+// 30% over 0.3 s, held 0.2 s, back over 0.3 s) 1.5 s apart; area 0.04 at rest.
+TEST(SetupMeasure, FindsTheHandsRangeAndEachPushsDepth) {
+    SetupMeasure measure;
+    const double rest = 0.2;  // sqrt(0.04)
+    for (int i = 0; i < 300; ++i) {
+        const double t = i / 30.0;
+        core::FrameResult r;
+        r.timestamp = core::seconds_to_us(t);
+        r.state = core::TrackerState::tracking;
+        r.has_target = true;
+        const double sweep = t < 2.0 ? 0.0 : t < 5.0 ? std::sin((t - 2.0) / 3.0 * CV_PI) : 0.0;
+        r.centroid = {0.3 + 0.4 * sweep, 0.5};
+        double scale = rest;
+        for (const double start : {6.0, 7.5}) {
+            const double u = t - start;
+            if (u >= 0 && u < 0.3) scale = rest * (1.0 + 0.3 * u / 0.3);
+            if (u >= 0.3 && u < 0.5) scale = rest * 1.3;
+            if (u >= 0.5 && u < 0.8) scale = rest * (1.0 + 0.3 * (0.8 - u) / 0.3);
+        }
+        r.area = scale * scale;
+        measure.add(r);
+    }
+    const SetupFigures f = measure.figures();
+    EXPECT_EQ(f.tracked_frames, 300);
+    EXPECT_NEAR(f.hand_area, 0.04, 1e-6);
+    EXPECT_NEAR(f.left, 0.3, 0.01);
+    EXPECT_NEAR(f.right, 0.7, 0.02);
+    ASSERT_EQ(f.push_rises.size(), 2U);
+    EXPECT_NEAR(f.push_depth, 0.3, 0.01);
+    const auto proposal = measure.propose(config::Config{}, 1920);
+    ASSERT_TRUE(proposal.has_value());
+    const core::PointerSettings& p = proposal->config.core.pointer;
+    EXPECT_NEAR(p.click.press_rise, 0.18, 1e-9);  // 0.6 of the depth
+    EXPECT_NEAR(p.click.release_rise, 0.09, 1e-9);
+    EXPECT_NEAR(p.motion.gain, 1920 / (f.right - f.left), 1.0);
+    EXPECT_NEAR(p.motion.active_left, 0.28, 0.011);
+    EXPECT_TRUE(config::cross_check(proposal->config).empty());
+}
+
+TEST(SetupMeasure, ProposesNothingFromTooFewTrackedFrames) {
+    SetupMeasure measure;
+    core::FrameResult r;
+    r.state = core::TrackerState::tracking;
+    r.area = 0.04;
+    for (int i = 0; i < 10; ++i) {
+        r.timestamp = core::seconds_to_us(i / 30.0);
+        measure.add(r);
+    }
+    EXPECT_FALSE(measure.propose(config::Config{}, 1920).has_value());
 }
 
 }  // namespace
