@@ -168,6 +168,7 @@ bool StateMachine::on_validating() noexcept {
 bool StateMachine::on_recovering() noexcept {
     static constexpr std::array<std::array<int, 2>, 8> directions{
         {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}}};
+    result_.recovery_from = candidate_.inner;
     const cv::Vec3f before = evidence_->previous_color(inner_);
     const auto tolerance = static_cast<float>(settings_.color_tolerance);
     std::optional<cv::Point2f> best;

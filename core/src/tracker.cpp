@@ -78,15 +78,15 @@ FrameResult Tracker::process(const FrameView& frame) noexcept {
     result.recovered = step.recovered;
     result.lost = step.lost;
     result.loss = step.loss;
-    if (step.acquired || !step.has_target) d.reference_area.reset();
-    if (!step.has_target) return result;
-
     // Working pixel centres are at integer coordinates; fractions are of the whole frame.
     const double width = d.settings.preprocess.work_width;
     const double height = d.settings.preprocess.work_height;
     const auto to_fraction = [&](cv::Point2f p) {
         return cv::Point2d((p.x + 0.5) / width, (p.y + 0.5) / height);
     };
+    if (step.recovery_from) result.recovery_from = to_fraction(*step.recovery_from);
+    if (step.acquired || !step.has_target) d.reference_area.reset();
+    if (!step.has_target) return result;
     result.has_target = true;
     result.centroid = to_fraction(step.estimate.centroid);
     result.inner = to_fraction(step.estimate.inner);

@@ -11,10 +11,12 @@
 
 #include "annotator.hpp"
 #include "input_error.hpp"
+#include "plot_command.hpp"
 #include "progress_bar.hpp"
 #include "raypoint/cli/output_path.hpp"
 #include "raypoint/cli/settings_options.hpp"
 #include "raypoint/cli/usage_error.hpp"
+#include "raypoint/core/pointer_controller.hpp"
 #include "raypoint/core/tracker.hpp"
 #include "result_writer.hpp"
 #include "video_source.hpp"
@@ -26,6 +28,7 @@ struct TrackOptions {
     std::string input;
     OutputFormat format = OutputFormat::jsonl;
     std::string annotate;
+    std::string plot;
     double fps = 0.0;
     bool verbose = false;
 };
@@ -46,6 +49,8 @@ TrackOptions parse_track_options(std::span<const std::string_view> args) {
             }
         } else if (arg == "--annotate") {
             options.annotate = option_value(args, i);
+        } else if (arg == "--plot") {
+            options.plot = option_value(args, i);
         } else if (arg == "--verbose") {
             options.verbose = true;
         } else if (arg == "--fps") {
@@ -82,6 +87,9 @@ int track_command(std::span<const std::string_view> args) {
     ResultWriter writer(stdout, options.format);
     std::optional<cv::VideoWriter> annotated;
     ProgressBar progress(source.frame_count());
+    // --plot: the track and the clicks the pointer would make (its commands go nowhere).
+    view::TrackLog log;
+    std::optional<core::PointerController> pointer;
     int frames = 0;
     while (auto frame = source.next()) {
         const core::FrameView view{frame->bgr.data,        frame->bgr.cols,
@@ -93,6 +101,17 @@ int track_command(std::span<const std::string_view> args) {
         writer.write(result,
                      static_cast<long>(
                          std::chrono::duration_cast<std::chrono::microseconds>(spent).count()));
+        if (!options.plot.empty()) {
+            const double t = static_cast<double>(result.timestamp) * 1e-6;
+            log.samples.push_back({t, result.state, result.has_position, result.position});
+            if (!pointer) {
+                pointer.emplace(config.core.pointer, static_cast<double>(frame->bgr.cols) /
+                                                         static_cast<double>(frame->bgr.rows));
+            }
+            for (const auto& change : pointer->update(result).button_changes()) {
+                if (change.button == core::Button::left) log.clicks.push_back({t, change.pressed});
+            }
+        }
         if (options.verbose && (result.lost || result.recovered)) {
             std::fprintf(stderr, "frame %lld t=%.3f: %s\n", static_cast<long long>(result.frame),
                          static_cast<double>(result.timestamp) * 1e-6,
@@ -114,6 +133,7 @@ int track_command(std::span<const std::string_view> args) {
         progress.update(++frames);
     }
     std::fflush(stdout);
+    if (!options.plot.empty() && !log.samples.empty()) write_plot(log, options.plot);
     return 0;
 }
 

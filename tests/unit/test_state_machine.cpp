@@ -5,6 +5,7 @@
 // 60% = 11,520 square pixels.
 
 #include <algorithm>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -230,6 +231,8 @@ TEST(StateMachine, ValidationToleranceIsNinetyInclusive) {
     });
     // clang-format on
     // RECOVERING looked at the 16 recovery points around the failed inner point P.
+    EXPECT_EQ(played.results[3].recovery_from, std::optional<cv::Point2f>(P));
+    EXPECT_FALSE(played.results[2].recovery_from.has_value());
     const auto& asked = played.painted_at[3];
     ASSERT_EQ(asked.size(), 17U);  // P itself, then the recovery points
     int found = 0;
@@ -276,6 +279,10 @@ TEST(StateMachine, RecoveryPicksTheBestMatchingPointAndReestimatesThere) {
     EXPECT_EQ(asked[1], cv::Point2f(90.0F, 50.0F));
     EXPECT_EQ(asked[9], cv::Point2f(100.0F, 50.0F));
     EXPECT_EQ(asked[17], settled);
+    // The frame says where it searched (for drawing); frames without RECOVERING do not.
+    ASSERT_TRUE(r.recovery_from.has_value());
+    EXPECT_EQ(*r.recovery_from, Q);
+    EXPECT_FALSE(played.results[1].recovery_from.has_value());
 }
 
 TEST(StateMachine, RecoveryFailsWhenTheReestimateDoesNotMatch) {

@@ -35,7 +35,31 @@ constexpr std::array track_options{
                "frame rate for the timestamps (default: the\n"
                "container's; 30 for an image sequence)"},
     OptionSpec{"--verbose", "", "say on stderr when and why a target is lost or recovered"},
+    OptionSpec{"--plot", "OUT.png", "also plot x, y, z, the state and the clicks over time"},
 };
+constexpr std::array plot_options{
+    OptionSpec{"--output", "OUT.png", "the picture to write (also -o OUT.png)"},
+    OptionSpec{"--events", "FILE", "clicks from a file sink's events (run --sink file:FILE)"},
+};
+// preview: where the frames come from, and the headless mode the tests drive.
+constexpr std::array preview_options{
+    OptionSpec{"--camera", "DEVICE", "/dev/videoN, /dev/v4l/by-id/..., or auto (default)"},
+    OptionSpec{"--input", "CLIP", "a recorded video instead of the camera"},
+    OptionSpec{"--headless", "", "no window; with --frames N and --screenshot OUT.png"},
+    OptionSpec{"--frames", "N", "headless: stop after N frames"},
+    OptionSpec{"--screenshot", "OUT.png", "headless: write the last view"},
+    OptionSpec{"--view", "edges|difference", "what is drawn under the markers (key v)"},
+    OptionSpec{"--control", "PATH", "the daemon's control socket, paused while on camera"},
+    OptionSpec{"--no-control", "", "do not pause a running daemon"},
+};
+// setup: preview's, and the screen the gain is proposed for.
+constexpr auto setup_options = [] {
+    std::array<OptionSpec, preview_options.size() + 1> options{};
+    std::copy(preview_options.begin(), preview_options.end(), options.begin());
+    options.back() =
+        OptionSpec{"--screen-width", "PIXELS", "the screen the pointer moves on (for the gain)"};
+    return options;
+}();
 constexpr std::array demo_options{
     OptionSpec{"--scene", "NAME", "scene preset (default nonconvex)"},
     OptionSpec{"--annotate", "OUT.mp4", "annotated clip (default raypoint-demo.mp4)"},
@@ -87,6 +111,22 @@ constexpr std::array commands{
                 "track a recorded video or image sequence (\"frames/%04d.png\"),\n"
                 "one line a frame on stdout",
                 track_options, true},
+    CommandSpec{"plot", "TRACK.jsonl",
+                "plot track's output: x, y, z, the state band and the clicks\n"
+                "over time, as a PNG",
+                plot_options},
+    CommandSpec{"preview", "",
+                "a window with the camera and what the tracker sees, trackbars\n"
+                "for the most-tuned settings; keys: v edges/difference, space\n"
+                "pause, w write them into the INI file, q quit. Pauses a running\n"
+                "daemon (ctl pause) while it has the camera",
+                preview_options, true},
+    CommandSpec{"setup", "",
+                "guided first run: measures hand size, motion range and push\n"
+                "depth, proposes [pointer] gain, the active region and [click]\n"
+                "press_rise/release_rise, lets you try them, writes the INI on\n"
+                "yes (--headless: when the try-it clicks once a push)",
+                setup_options, true},
     CommandSpec{"demo", "",
                 "render a scene in memory, track it, print the 3D positions and\n"
                 "write an annotated clip",

@@ -50,6 +50,9 @@ struct StepResult {
     bool lost = false;        // the target was dropped this frame
     LossReason loss = LossReason::none;
     int iterations = 0;
+    // RECOVERING ran this frame: the failed inner point its recovery points surround (working
+    // pixels, the offsets recovery_near and recovery_far in 8 directions), for drawing.
+    std::optional<cv::Point2f> recovery_from;
 };
 
 class StateMachine {

@@ -35,6 +35,8 @@ struct FrameResult {
     bool recovered = false;  // RECOVERING ran this frame and succeeded
     bool lost = false;       // the target was dropped this frame
     LossReason loss = LossReason::none;
+    // Fractions: the failed inner point RECOVERING searched around this frame (for drawing).
+    std::optional<cv::Point2d> recovery_from;
 };
 
 // The images of the last processed frame, for drawing and tests (working size).
