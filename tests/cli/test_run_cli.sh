@@ -38,6 +38,24 @@ mkdir -p "$XDG_CONFIG_HOME/raypoint"
 daemon_pid=$!
 for _ in $(seq 50); do [ -S "$XDG_RUNTIME_DIR/raypoint.sock" ] && break; sleep 0.1; done
 sleep 1
+# No network socket anywhere: every socket the running daemon holds is a unix one (the control
+# socket; sd_notify's too under systemd), none in the kernel's TCP, UDP, raw or packet tables.
+# The control socket's file is the user's alone.
+[ "$(stat -c %a "$XDG_RUNTIME_DIR/raypoint.sock")" = 600 ] ||
+  fail "control socket mode $(stat -c %a "$XDG_RUNTIME_DIR/raypoint.sock"), not 600"
+sockets=0
+for fd in /proc/$daemon_pid/fd/*; do
+  inode=$(readlink "$fd" | sed -n 's/^socket:\[\([0-9]*\)\]$/\1/p')
+  [ -n "$inode" ] || continue
+  sockets=$((sockets + 1))
+  for table in tcp tcp6 udp udp6 udplite udplite6 raw raw6 packet; do
+    [ -r "/proc/$daemon_pid/net/$table" ] || continue
+    awk -v inode="$inode" 'NR > 1 && $0 ~ (" " inode " ") {found = 1} END {exit !found}' \
+      "/proc/$daemon_pid/net/$table" && fail "a $table socket (inode $inode) in the daemon"
+  done
+  grep -q " $inode " "/proc/$daemon_pid/net/unix" || fail "socket inode $inode is not a unix socket"
+done
+[ "$sockets" -ge 1 ] || fail "no socket found in /proc/$daemon_pid/fd (the control socket?)"
 "$raypoint" ctl status > "$work/status.txt" || fail "ctl status exited $?"
 grep -q '^state: ' "$work/status.txt" || fail "status: $(cat "$work/status.txt")"
 grep -q '^paused: no' "$work/status.txt" || fail "status before pause: $(cat "$work/status.txt")"
@@ -48,6 +66,14 @@ done
 "$raypoint" doctor > "$work/doctor.txt"
 grep -q '^ok   service  raypoint run answers on ' "$work/doctor.txt" || fail "doctor: $(cat "$work/doctor.txt")"
 grep -q '^ok   config ' "$work/doctor.txt" || fail "doctor config: $(cat "$work/doctor.txt")"
+# The service never needs root, and doctor says so to root.
+if [ "$(id -u)" -eq 0 ]; then
+  grep -q '^note user     running as root: raypoint never needs root' "$work/doctor.txt" ||
+    fail "doctor as root: $(cat "$work/doctor.txt")"
+else
+  grep -q '^ok   user     runs as uid [0-9]*, not root' "$work/doctor.txt" ||
+    fail "doctor as a user: $(cat "$work/doctor.txt")"
+fi
 [ "$("$raypoint" ctl pause)" = "paused" ] || fail "ctl pause"
 "$raypoint" ctl status | grep -q '^paused: yes' || fail "status after pause"
 [ "$("$raypoint" ctl resume)" = "resumed" ] || fail "ctl resume"
