@@ -192,6 +192,23 @@ void PointerDaemon::on_frame(const Capture& capture) {
     parts_.sink->emit(pointer_->update(result), frame.timestamp);
     // After the write returned: uinput's write(2) of the events, the file sink's fflush.
     statistics_.record_latency(capture.ready, handed, monotonic_now_us());
+    check_output();
+}
+
+void PointerDaemon::check_output() {
+    // Logged when failures start and when they stop, not every frame (logging allocates).
+    const long long failed = parts_.sink->failed_writes();
+    const bool failing = failed != failed_writes_seen_;
+    failed_writes_seen_ = failed;
+    if (failing == output_failing_) return;
+    output_failing_ = failing;
+    if (failing) {
+        log::warning(std::string("output: a write to ") + std::string(parts_.sink->name()) +
+                     " failed: " + std::strerror(parts_.sink->last_error()) +
+                     "; a lost button release is sent again");
+    } else {
+        log::info("output: writes succeed again");
+    }
 }
 
 void PointerDaemon::start_instruction_trial() {
@@ -314,6 +331,7 @@ void PointerDaemon::report(Clock::time_point now) {
     std::string state =
         camera_lost_ ? "camera lost" : std::string(core::to_string(last_result_.state));
     if (paused_) state += " (paused)";
+    if (output_failing_) state += " (output failing)";
     notifier_.status(state + format_status(", %.1f fps, CPU %.1f%%", statistics_.fps(),
                                            statistics_.cpu_percent()));
 }
@@ -324,6 +342,13 @@ std::string PointerDaemon::status_text() const {
     text += "source: " + parts_.source->description() +
             (camera_lost_ ? " (lost: " + lost_reason_ + ")" : "") + "\n";
     text += "sink: " + std::string(parts_.sink->name()) + "\n";
+    // Writes the device refused (EAGAIN, ENODEV): a lost release is sent again (PointerEncoder),
+    // but the user should know why a movement or click went missing.
+    text += "output errors: " + std::to_string(parts_.sink->failed_writes());
+    if (parts_.sink->failed_writes() > 0) {
+        text += std::string(" (last: ") + std::strerror(parts_.sink->last_error()) + ")";
+    }
+    text += "\n";
     text += format_status("fps: %.1f\ncpu: %.1f%% of one core\n", statistics_.fps(),
                           statistics_.cpu_percent());
     text += "frames: " + std::to_string(statistics_.frames()) + "\n";
