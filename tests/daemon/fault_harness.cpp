@@ -73,8 +73,8 @@ Capture ScriptedSource::next(int /*timeout_ms*/) {
 bool ScriptedSource::reopen() {
     ++reopen_attempts_;
     if (!lost_) return true;
-    // Away for one failed attempt, as an unplugged camera whose node is not back yet.
-    if (++attempts_this_loss_ < 2) {
+    // Away for failed_reopens attempts, as an unplugged camera whose node is not back yet.
+    if (++attempts_this_loss_ <= failed_reopens) {
         error_ = "open /dev/video0: No such file or directory";
         return false;
     }

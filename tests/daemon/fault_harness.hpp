@@ -44,6 +44,8 @@ class ScriptedSource final : public FrameSource {
     const std::string& last_error() const noexcept override { return error_; }
     std::string description() const override { return "scripted clip"; }
 
+    // Reopen attempts that fail after each capture error before one works.
+    int failed_reopens = 1;
     // Runs at the start of each next() with the index of the frame about to be delivered.
     std::function<void(int)> before_frame;
     int reopen_attempts() const noexcept { return reopen_attempts_; }

@@ -88,12 +88,13 @@ struct DaemonRun {
 // source, the sink and the probe), as a camera, a device or a user would act at that moment.
 template <class Hook>
 DaemonRun run_daemon(const std::string& preset, std::vector<FaultWindow> script,
-                     DeviceModelSink& sink, Hook hook,
-                     std::function<config::Config()> reload = {}) {
+                     DeviceModelSink& sink, Hook hook, std::function<config::Config()> reload = {},
+                     int loops = 1, int failed_reopens = 1) {
     unsetenv("NOTIFY_SOCKET");
     const std::string path = socket_path(preset.c_str());
-    auto source = std::make_unique<ScriptedSource>(rendered_clip(preset), std::move(script));
+    auto source = std::make_unique<ScriptedSource>(rendered_clip(preset), std::move(script), loops);
     ScriptedSource& scripted = *source;
+    scripted.failed_reopens = failed_reopens;
     StatusProbe probe(path);
     scripted.before_frame = [&](int index) { hook(index, probe); };
     struct ForwardingSink final : EventSink {
@@ -301,6 +302,43 @@ INSTANTIATE_TEST_SUITE_P(Daemon, Signals,
                                            SignalCase{SIGHUP, 5.5, false, "SIGHUP_mid_drag"},
                                            SignalCase{SIGHUP, 5.0, true, "SIGHUP_camera_lost"}),
                          [](const auto& param_info) { return std::string(param_info.param.name); });
+
+// 20 unplug/replug cycles in one run, each while the drag holds the button (5.5 s of each loop
+// of `drag`): each loss releases the button, every press has its release, the camera comes back
+// every time, and the drags after the last one still click.
+TEST(DaemonFaults, TwentyUnplugCyclesMidDrag) {
+    constexpr int cycles = 20;
+    const int per_loop = static_cast<int>(rendered_clip("drag").size());
+    std::vector<FaultWindow> script;
+    for (int i = 0; i < cycles; ++i) {
+        const int at = i * per_loop + frame_at(5.5);
+        script.push_back({Fault::capture_error, at, at + 10});
+    }
+    DeviceModelSink sink;
+    int down_at_unplug = 0;
+    const DaemonRun run = run_daemon(
+        "drag", script, sink,
+        [&](int index, StatusProbe& probe) {
+            if (index % per_loop == frame_at(5.5) && sink.any_down()) ++down_at_unplug;
+            if (index == (cycles + 1) * per_loop - 10) probe.ask();
+            if (index > (cycles + 1) * per_loop - 10) probe.collect();
+        },
+        {}, cycles + 1, 0);
+    EXPECT_EQ(run.exit_code, 0);
+    EXPECT_GE(down_at_unplug, cycles - 2) << "the button was down at (nearly) every unplug";
+    long long presses = 0;
+    long long releases = 0;
+    for (const KeyEvent& key : sink.keys())
+        ++(key.pressed ? presses : releases);
+    EXPECT_EQ(presses, releases);
+    EXPECT_GE(presses, cycles);
+    EXPECT_FALSE(sink.any_down());
+    EXPECT_NE(run.status.find("camera losses: 20\n"), std::string::npos) << run.status;
+    // The last loop, with no unplug, drags as the first would: one press and its release.
+    EXPECT_EQ(presses_between(sink, cycles * per_loop * frame_interval_us,
+                              (cycles + 1) * per_loop * frame_interval_us),
+              1);
+}
 
 // The INI made invalid (or deleted) while running: SIGHUP's reload throws, the running
 // configuration stays, and the drag goes on to its own release.

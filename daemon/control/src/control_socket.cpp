@@ -88,7 +88,8 @@ ControlServer::ControlServer(std::string path) : path_(std::move(path)) {
     listen_fd_ = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
     if (listen_fd_ < 0) throw ControlError(failure("socket", path_));
     // bind() creates the file with the umask's mode: 0177 makes it 0600 from the first moment,
-    // with no window in which another user could connect. Set-up runs before any thread.
+    // with no window in which another user could connect. The umask is the process's: nothing
+    // else of the daemon creates files while it sets up.
     const mode_t saved_umask = umask(0177);
     const int bound = bind(listen_fd_, reinterpret_cast<const sockaddr*>(&address), sizeof address);
     umask(saved_umask);

@@ -353,6 +353,10 @@ std::string PointerDaemon::status_text() const {
                           statistics_.cpu_percent());
     text += "frames: " + std::to_string(statistics_.frames()) + "\n";
     text += "camera losses: " + std::to_string(lost_count_) + "\n";
+    if (parts_.control && parts_.control->refused_peers() > 0) {
+        text += "control clients refused (another user): " +
+                std::to_string(parts_.control->refused_peers()) + "\n";
+    }
     text += "instructions: " +
             (instructions_text_.empty()
                  ? "measuring (" + std::to_string(instruction_trial_.frames_recorded()) +
