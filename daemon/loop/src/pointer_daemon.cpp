@@ -207,7 +207,7 @@ void PointerDaemon::check_output() {
                      " failed: " + std::strerror(parts_.sink->last_error()) +
                      "; a lost button release is sent again");
     } else {
-        log::info("output: writes succeed again");
+        log::info("output: writes no longer failing");
     }
 }
 
