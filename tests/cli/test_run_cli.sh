@@ -39,6 +39,32 @@ mkdir -p "$XDG_CONFIG_HOME/raypoint"
 daemon_pid=$!
 for _ in $(seq 50); do [ -S "$XDG_RUNTIME_DIR/raypoint.sock" ] && break; sleep 0.1; done
 sleep 1
+# No network socket anywhere: every socket the running daemon holds is a unix one (the control
+# socket; sd_notify's too under systemd), none in the kernel's TCP, UDP, raw or packet tables.
+# The control socket's file is the user's alone.
+[ "$(stat -c %a "$XDG_RUNTIME_DIR/raypoint.sock")" = 600 ] ||
+  fail "control socket mode $(stat -c %a "$XDG_RUNTIME_DIR/raypoint.sock"), not 600"
+# Three awk runs in all: the paced clip lasts 9 s, and the checks after this need the daemon.
+inodes=$(for fd in /proc/$daemon_pid/fd/*; do readlink "$fd"; done |
+  sed -n 's/^socket:\[\([0-9]*\)\]$/\1/p' | tr '\n' ' ')
+[ -n "$inodes" ] || fail "no socket found in /proc/$daemon_pid/fd (the control socket?)"
+net=/proc/$daemon_pid/net
+# The inode column: 10th in the TCP, UDP and raw tables, 9th in packet's, 7th in unix's.
+in_table() {  # COLUMN FILE...: the inodes of $inodes in the files' COLUMN (missing files skipped)
+  local column=$1 file files=()
+  shift
+  for file in "$@"; do [ -r "$file" ] && files+=("$file"); done
+  [ ${#files[@]} -gt 0 ] || return 0
+  awk -v list="$inodes" -v column="$column" 'BEGIN {split(list, wanted, " ")
+      for (i in wanted) want[wanted[i]] = 1}
+    FNR > 1 && ($column in want) {print $column}' "${files[@]}"
+}
+network=$(in_table 10 $net/tcp $net/tcp6 $net/udp $net/udp6 $net/udplite $net/udplite6 $net/raw $net/raw6)
+network+=$(in_table 9 $net/packet)
+[ -z "$network" ] || fail "network sockets in the daemon: inodes $network"
+unix_count=$(in_table 7 $net/unix | sort -u | wc -l)
+[ "$unix_count" -eq "$(wc -w <<<"$inodes")" ] ||
+  fail "sockets $inodes: only $unix_count of them unix sockets"
 "$raypoint" ctl status > "$work/status.txt" || fail "ctl status exited $?"
 grep -q '^state: ' "$work/status.txt" || fail "status: $(cat "$work/status.txt")"
 grep -q '^paused: no' "$work/status.txt" || fail "status before pause: $(cat "$work/status.txt")"
@@ -49,6 +75,14 @@ done
 "$raypoint" doctor > "$work/doctor.txt"
 grep -q '^ok   service  raypoint run answers on ' "$work/doctor.txt" || fail "doctor: $(cat "$work/doctor.txt")"
 grep -q '^ok   config ' "$work/doctor.txt" || fail "doctor config: $(cat "$work/doctor.txt")"
+# The service never needs root, and doctor says so to root.
+if [ "$(id -u)" -eq 0 ]; then
+  grep -q '^note user     running as root: raypoint never needs root' "$work/doctor.txt" ||
+    fail "doctor as root: $(cat "$work/doctor.txt")"
+else
+  grep -q '^ok   user     runs as uid [0-9]*, not root' "$work/doctor.txt" ||
+    fail "doctor as a user: $(cat "$work/doctor.txt")"
+fi
 [ "$("$raypoint" ctl pause)" = "paused" ] || fail "ctl pause"
 "$raypoint" ctl status | grep -q '^paused: yes' || fail "status after pause"
 [ "$("$raypoint" ctl resume)" = "resumed" ] || fail "ctl resume"

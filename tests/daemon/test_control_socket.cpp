@@ -6,14 +6,19 @@
 
 #include <poll.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/un.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <future>
 #include <string>
+#include <thread>
 
 #include "raypoint/control/control_socket.hpp"
 
@@ -108,6 +113,136 @@ TEST(ControlSocket, SecondDaemonIsRefusedAndStaleSocketReplaced) {
     ASSERT_TRUE(std::filesystem::exists(path));
     EXPECT_NO_THROW(ControlServer replacement(path));
     EXPECT_FALSE(std::filesystem::exists(path)) << "the socket file is removed on exit";
+}
+
+// A connected client socket, or -1.
+int connect_to(const std::string& path) {
+    const int fd = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    sockaddr_un address{};
+    address.sun_family = AF_UNIX;
+    std::snprintf(address.sun_path, sizeof address.sun_path, "%s", path.c_str());
+    if (connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0) {
+        close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+// Everything the server sends until it closes (or 5 s pass).
+std::string read_all(int fd) {
+    std::string text;
+    char buffer[256];
+    pollfd waiting{fd, POLLIN, 0};
+    while (poll(&waiting, 1, 5000) == 1) {
+        const ssize_t got = read(fd, buffer, sizeof buffer);
+        if (got <= 0) break;
+        text.append(buffer, static_cast<std::size_t>(got));
+    }
+    return text;
+}
+
+TEST(ControlSocketSecurity, SocketFileIsOnlyTheUsers) {
+    const std::string path = temp_socket_path();
+    const mode_t saved = umask(0);  // a permissive umask must not make it wider
+    ControlServer server(path);
+    umask(saved);
+    struct stat info {};
+    ASSERT_EQ(stat(path.c_str(), &info), 0);
+    EXPECT_TRUE(S_ISSOCK(info.st_mode));
+    EXPECT_EQ(info.st_mode & 07777, 0600U);
+    EXPECT_EQ(info.st_uid, geteuid());
+}
+
+// Another user's client (a child that becomes nobody) gets no answer, and the daemon counts it.
+// With the file's mode opened up on purpose, the uid check alone stands in the way; with 0600 the
+// file itself does. Needs root to change uid: skipped otherwise.
+TEST(ControlSocketSecurity, AnotherUsersClientIsRefused) {
+    if (geteuid() != 0) GTEST_SKIP() << "needs root to run a client as another uid (nobody)";
+    const std::string path = temp_socket_path();
+    ControlServer server(path);
+    const std::string dir = path.substr(0, path.rfind('/'));
+    ASSERT_EQ(chmod(dir.c_str(), 0755), 0);
+    ASSERT_EQ(chmod(path.c_str(), 0666), 0);
+    constexpr uid_t nobody = 65534;
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        if (setgid(nobody) != 0 || setuid(nobody) != 0) _exit(10);
+        const int fd = connect_to(path);
+        if (fd < 0) _exit(11);
+        // The daemon may have closed the connection already: EPIPE, not SIGPIPE, is fine.
+        (void)send(fd, "status\n", 7, MSG_NOSIGNAL);
+        const std::string reply = read_all(fd);
+        _exit(reply.empty() ? 0 : 13);  // closed without a word
+    }
+    pollfd waiting{server.fd(), POLLIN, 0};
+    ASSERT_EQ(poll(&waiting, 1, 5000), 1);
+    EXPECT_FALSE(server.next_request().has_value());
+    EXPECT_EQ(server.refused_peers(), 1);
+    int status = 0;
+    ASSERT_EQ(waitpid(child, &status, 0), child);
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "10, 11: the child's set-up failed, 13: it got a reply";
+
+    // With the file at 0600 again, nobody cannot even connect.
+    ASSERT_EQ(chmod(path.c_str(), 0600), 0);
+    const pid_t second = fork();
+    ASSERT_GE(second, 0);
+    if (second == 0) {
+        if (setgid(nobody) != 0 || setuid(nobody) != 0) _exit(10);
+        _exit(connect_to(path) < 0 && errno == EACCES ? 0 : 14);
+    }
+    ASSERT_EQ(waitpid(second, &status, 0), second);
+    EXPECT_EQ(WEXITSTATUS(status), 0) << "14: nobody connected to a 0600 socket";
+}
+
+// A client that connects and says nothing, one that dribbles a byte at a time without a newline,
+// and one that sends more than a request can be: each gets an error reply within the request
+// timeout, so the frame loop waits no longer than that. The bound checked is 20 times the
+// timeout: what fails is a wait that grows with the client's patience, not a slow machine.
+TEST(ControlSocketSecurity, SilentSlowAndOversizedClientsCannotStallTheLoop) {
+    using Clock = std::chrono::steady_clock;
+    const auto limit = std::chrono::milliseconds(20 * raypoint::daemon::control_request_timeout_ms);
+    const std::string path = temp_socket_path();
+    ControlServer server(path);
+
+    const auto served = [&](int client) {
+        pollfd waiting{server.fd(), POLLIN, 0};
+        EXPECT_EQ(poll(&waiting, 1, 5000), 1);
+        const auto start = Clock::now();
+        EXPECT_FALSE(server.next_request().has_value());
+        const auto took = Clock::now() - start;
+        const std::string reply = read_all(client);
+        close(client);
+        EXPECT_EQ(reply.rfind("error: unknown command", 0), 0U) << reply;
+        return took;
+    };
+
+    const int silent = connect_to(path);
+    ASSERT_GE(silent, 0);
+    EXPECT_LT(served(silent), limit);
+
+    const int slow = connect_to(path);
+    ASSERT_GE(slow, 0);
+    std::atomic<bool> stop{false};
+    std::thread dribble([&] {
+        // A byte every 20 ms, for up to 3 s: each read comes within a per-read timeout.
+        for (int i = 0; i < 150 && !stop; ++i) {
+            if (send(slow, "x", 1, MSG_NOSIGNAL) != 1) break;
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+    });
+    const auto slow_took = served(slow);
+    stop = true;
+    dribble.join();
+    EXPECT_LT(slow_took, limit);
+
+    const int big = connect_to(path);
+    ASSERT_GE(big, 0);
+    const std::string flood(4096, 'p');
+    ASSERT_EQ(send(big, flood.data(), flood.size(), MSG_NOSIGNAL),
+              static_cast<ssize_t>(flood.size()));
+    EXPECT_LT(served(big), limit);
 }
 
 TEST(ControlSocket, DefaultPathNeedsXdgRuntimeDir) {

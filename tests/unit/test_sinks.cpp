@@ -120,6 +120,87 @@ TEST(PointerEncoder, PressAndReleaseEachGetAReport) {
     EXPECT_FALSE(encoder.is_down(Button::left));
 }
 
+// A device that refuses writes (uinput's EAGAIN when its buffer is full, ENODEV when it is
+// gone): write_batch tells the encoder of each lost release, and the release goes out again.
+struct FailingDevice {
+    int fail_with = 0;
+    Events written;
+    int operator()(const EvdevEvent& event) {
+        if (fail_with != 0) return -fail_with;
+        written.push_back(event);
+        return 0;
+    }
+};
+
+class WriteFailures : public ::testing::TestWithParam<int> {};
+
+TEST_P(WriteFailures, LostReleaseGoesOutWithTheNextBatch) {
+    PointerEncoder encoder(relative);
+    FailingDevice device;
+    EXPECT_EQ(write_batch(encoder, encoder.encode(change(Button::left, true)), device), 0);
+    device.fail_with = GetParam();
+    EXPECT_EQ(write_batch(encoder, encoder.encode(change(Button::left, false)), device),
+              GetParam());
+    EXPECT_TRUE(encoder.is_down(Button::left)) << "the device still has it down";
+    // Failing again: still pending.
+    EXPECT_EQ(write_batch(encoder, encoder.encode(move(1, 0)), device), GetParam());
+    EXPECT_TRUE(encoder.is_down(Button::left));
+    device.fail_with = 0;
+    device.written.clear();
+    EXPECT_EQ(write_batch(encoder, encoder.encode(move(2, 0)), device), 0);
+    EXPECT_EQ(device.written, (Events{{EV_REL, REL_X, 2}, syn, {EV_KEY, BTN_LEFT, 0}, syn}));
+    EXPECT_FALSE(encoder.is_down(Button::left));
+    // Sent once: nothing more to release.
+    EXPECT_TRUE(encoder.release_all().empty());
+}
+
+TEST_P(WriteFailures, LostReleaseGoesOutWithReleaseAll) {
+    PointerEncoder encoder(relative);
+    FailingDevice device;
+    write_batch(encoder, encoder.encode(change(Button::right, true)), device);
+    device.fail_with = GetParam();
+    write_batch(encoder, encoder.encode(change(Button::right, false)), device);
+    device.fail_with = 0;
+    device.written.clear();
+    write_batch(encoder, encoder.release_all(), device);
+    EXPECT_EQ(device.written, (Events{{EV_KEY, BTN_RIGHT, 0}, syn}));
+    EXPECT_FALSE(encoder.is_down(Button::right));
+}
+
+// The pointer presses the button again before the retry: the device has it down already, so
+// the press is dropped and no release is sent in between.
+TEST_P(WriteFailures, PressAgainCancelsTheRetry) {
+    PointerEncoder encoder(relative);
+    FailingDevice device;
+    write_batch(encoder, encoder.encode(change(Button::left, true)), device);
+    device.fail_with = GetParam();
+    write_batch(encoder, encoder.encode(change(Button::left, false)), device);
+    device.fail_with = 0;
+    device.written.clear();
+    EXPECT_EQ(write_batch(encoder, encoder.encode(change(Button::left, true)), device), 0);
+    EXPECT_TRUE(device.written.empty());
+    EXPECT_TRUE(encoder.is_down(Button::left));
+    EXPECT_EQ(events(encoder.release_all()), (Events{{EV_KEY, BTN_LEFT, 0}, syn}));
+}
+
+// A lost press changes nothing the desktop sees; the release that follows is harmless (the
+// kernel drops a release of a key that is up) and the encoder counts the button up.
+TEST_P(WriteFailures, LostPressIsNotRetried) {
+    PointerEncoder encoder(relative);
+    FailingDevice device;
+    device.fail_with = GetParam();
+    EXPECT_EQ(write_batch(encoder, encoder.encode(change(Button::left, true)), device), GetParam());
+    device.fail_with = 0;
+    EXPECT_EQ(write_batch(encoder, encoder.encode(change(Button::left, false)), device), 0);
+    EXPECT_FALSE(encoder.is_down(Button::left));
+    EXPECT_TRUE(encoder.encode(PointerCommand{}).empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(Uinput, WriteFailures, ::testing::Values(EAGAIN, ENODEV),
+                         [](const auto& param_info) {
+                             return std::string(param_info.param == EAGAIN ? "EAGAIN" : "ENODEV");
+                         });
+
 TEST(PointerEncoder, ClickInOneCommandComesAfterTheMotion) {
     // A dwell click: the press and the release need a report between them.
     PointerEncoder encoder(relative);
@@ -168,6 +249,9 @@ TEST(PointerEncoder, ReleaseAllReleasesWhatIsDown) {
 
 TEST(PointerEncoder, FullestCommandFits) {
     PointerEncoder encoder(relative);
+    // The right and middle buttons' releases were lost: both go out with the next command.
+    encoder.release_failed(Button::right);
+    encoder.release_failed(Button::middle);
     PointerCommand command = move(1, 1);
     command.wheel = 1;
     for (int i = 0; i < PointerCommand::max_changes; ++i)

@@ -42,6 +42,23 @@ void print(const std::string& area, const Check& check, int& failures) {
     }
 }
 
+// A warning, not a failure: what root can do a user can too, so root changes no other check's
+// outcome, but a service run as root would hide the missing group or udev rule a user meets.
+void print_root_note() {
+    if (geteuid() != 0) {
+        std::printf(
+            "%-4s %-8s %s\n", "ok", "user",
+            ("runs as uid " + std::to_string(geteuid()) + ", not root (raypoint never needs root)")
+                .c_str());
+        return;
+    }
+    std::printf("%-4s %-8s %s\n", "note", "user",
+                "running as root: raypoint never needs root, and the checks below are root's");
+    std::printf(
+        "     fix: run raypoint as the user whose pointer it drives (systemctl --user "
+        "start raypoint); the camera needs the video group, /dev/uinput the udev rule\n");
+}
+
 // The device node can be opened for reading and writing by this user.
 std::string access_problem(const std::string& path) {
     if (access(path.c_str(), R_OK | W_OK) == 0) return {};
@@ -226,6 +243,7 @@ Check check_instructions(const config::Config& settings) {
 int doctor_command(std::span<const std::string_view> args) {
     if (!args.empty()) throw UsageError(std::string(args.front()) + ": doctor takes no options");
     int failures = 0;
+    print_root_note();
     config::Config settings;
     print("config", check_config(settings), failures);
     print("camera", check_camera(settings), failures);

@@ -4,20 +4,18 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/un.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
 namespace raypoint::daemon {
 namespace {
-
-// A client that connects and then says nothing must not stall the frame loop.
-constexpr int request_timeout_ms = 50;
-constexpr std::size_t request_limit = 64;
 
 std::string failure(const std::string& call, const std::string& path) {
     return call + " " + path + ": " + std::strerror(errno);
@@ -71,6 +69,10 @@ std::optional<ControlCommand> control_command_from_string(std::string_view text)
     return std::nullopt;
 }
 
+std::optional<ControlCommand> parse_control_request(std::string_view bytes) noexcept {
+    return control_command_from_string(bytes.substr(0, bytes.find('\n')));
+}
+
 std::string default_control_path() {
     const char* runtime = std::getenv("XDG_RUNTIME_DIR");
     if (runtime == nullptr || *runtime == '\0') {
@@ -89,8 +91,13 @@ ControlServer::ControlServer(std::string path) : path_(std::move(path)) {
     unlink(path_.c_str());  // a socket file a crashed daemon left behind
     listen_fd_ = socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
     if (listen_fd_ < 0) throw ControlError(failure("socket", path_));
-    if (bind(listen_fd_, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0 ||
-        listen(listen_fd_, 4) != 0) {
+    // bind() creates the file with the umask's mode: 0177 makes it 0600 from the first moment,
+    // with no window in which another user could connect. The umask is the process's: nothing
+    // else of the daemon creates files while it sets up.
+    const mode_t saved_umask = umask(0177);
+    const int bound = bind(listen_fd_, reinterpret_cast<const sockaddr*>(&address), sizeof address);
+    umask(saved_umask);
+    if (bound != 0 || listen(listen_fd_, 4) != 0) {
         const std::string message = failure("bind", path_);
         close(listen_fd_);
         throw ControlError(message);
@@ -109,20 +116,36 @@ std::optional<ControlCommand> ControlServer::next_request() noexcept {
     if (client_fd_ >= 0) reply("error: no reply was given\n");
     client_fd_ = accept4(listen_fd_, nullptr, nullptr, SOCK_CLOEXEC);
     if (client_fd_ < 0) return std::nullopt;
-    char buffer[request_limit];
+    ucred peer{};
+    socklen_t peer_size = sizeof peer;
+    if (getsockopt(client_fd_, SOL_SOCKET, SO_PEERCRED, &peer, &peer_size) != 0 ||
+        peer.uid != geteuid()) {
+        // Another user (only root gets past the 0600 file): no answer, not even the state.
+        ++refused_peers_;
+        close(client_fd_);
+        client_fd_ = -1;
+        return std::nullopt;
+    }
+    // One deadline for the whole request, not one a read: a client dribbling a byte at a time
+    // holds the loop no longer than one that sends nothing.
+    const auto deadline =
+        std::chrono::steady_clock::now() + std::chrono::milliseconds(control_request_timeout_ms);
+    char buffer[control_request_limit];
     std::size_t length = 0;
     while (length < sizeof buffer) {
+        const auto left = std::chrono::ceil<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) break;
         pollfd waiting{client_fd_, POLLIN, 0};
-        if (poll(&waiting, 1, request_timeout_ms) <= 0) break;
+        if (poll(&waiting, 1, static_cast<int>(left.count())) <= 0) break;
         const ssize_t got = read(client_fd_, buffer + length, sizeof buffer - length);
         if (got <= 0) break;
         length += static_cast<std::size_t>(got);
         if (std::memchr(buffer, '\n', length) != nullptr) break;
     }
-    std::string_view request(buffer, length);
-    request = request.substr(0, request.find('\n'));
-    if (const auto command = control_command_from_string(request)) return command;
-    reply("error: unknown command '" + std::string(request) +
+    const std::string_view request(buffer, length);
+    if (const auto command = parse_control_request(request)) return command;
+    reply("error: unknown command '" + std::string(request.substr(0, request.find('\n'))) +
           "' (allowed: pause|resume|toggle|recenter|status)\n");
     return std::nullopt;
 }

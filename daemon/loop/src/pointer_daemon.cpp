@@ -212,6 +212,23 @@ void PointerDaemon::on_frame(const Capture& capture) {
     parts_.sink->emit(pointer_->update(result), frame.timestamp);
     // After the write returned: uinput's write(2) of the events, the file sink's fflush.
     statistics_.record_latency(capture.ready, handed, monotonic_now_us());
+    check_output();
+}
+
+void PointerDaemon::check_output() {
+    // Logged when failures start and when they stop, not every frame (logging allocates).
+    const long long failed = parts_.sink->failed_writes();
+    const bool failing = failed != failed_writes_seen_;
+    failed_writes_seen_ = failed;
+    if (failing == output_failing_) return;
+    output_failing_ = failing;
+    if (failing) {
+        log::warning(std::string("output: a write to ") + std::string(parts_.sink->name()) +
+                     " failed: " + std::strerror(parts_.sink->last_error()) +
+                     "; a lost button release is sent again");
+    } else {
+        log::info("output: writes no longer failing");
+    }
 }
 
 void PointerDaemon::start_instruction_trial() {
@@ -370,6 +387,7 @@ void PointerDaemon::report(Clock::time_point now) {
     std::string state =
         camera_lost_ ? "waiting for a camera" : std::string(core::to_string(last_result_.state));
     if (paused_) state += parts_.close_when_paused ? " (paused, camera closed)" : " (paused)";
+    if (output_failing_) state += " (output failing)";
     notifier_.status(state + format_status(", %.1f fps, CPU %.1f%%", statistics_.fps(),
                                            statistics_.cpu_percent()));
 }
@@ -384,10 +402,21 @@ std::string PointerDaemon::status_text() const {
                             (paused_ && parts_.close_when_paused ? " (closed while paused)" : "")) +
         "\n";
     text += "sink: " + std::string(parts_.sink->name()) + "\n";
+    // Writes the device refused (EAGAIN, ENODEV): a lost release is sent again (PointerEncoder),
+    // but the user should know why a movement or click went missing.
+    text += "output errors: " + std::to_string(parts_.sink->failed_writes());
+    if (parts_.sink->failed_writes() > 0) {
+        text += std::string(" (last: ") + std::strerror(parts_.sink->last_error()) + ")";
+    }
+    text += "\n";
     text += format_status("fps: %.1f\ncpu: %.1f%% of one core\n", statistics_.fps(),
                           statistics_.cpu_percent());
     text += "frames: " + std::to_string(statistics_.frames()) + "\n";
     text += "camera losses: " + std::to_string(lost_count_) + "\n";
+    if (parts_.control && parts_.control->refused_peers() > 0) {
+        text += "control clients refused (another user): " +
+                std::to_string(parts_.control->refused_peers()) + "\n";
+    }
     text += "instructions: " +
             (instructions_text_.empty()
                  ? "measuring (" + std::to_string(instruction_trial_.frames_recorded()) +

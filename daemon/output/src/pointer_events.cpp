@@ -39,6 +39,15 @@ std::uint16_t button_code(core::Button button) noexcept {
     return BTN_LEFT;
 }
 
+static_assert(key_event_type == EV_KEY);
+
+std::optional<core::Button> button_of_code(std::uint16_t code) noexcept {
+    for (core::Button button : all_buttons) {
+        if (button_code(button) == code) return button;
+    }
+    return std::nullopt;
+}
+
 PointerEncoder::PointerEncoder(const DeviceProfile& profile) noexcept : profile_(profile) {}
 
 bool PointerEncoder::is_down(core::Button button) const noexcept {
@@ -50,13 +59,29 @@ EventBatch PointerEncoder::encode(const core::PointerCommand& command) noexcept 
     encode_motion(command, batch);
     for (const core::ButtonChange& change : command.button_changes())
         encode_change(change, batch);
+    for (core::Button button : all_buttons) {
+        if (!release_pending_[index(button)]) continue;
+        release_pending_[index(button)] = false;
+        const auto changes = command.button_changes();
+        const bool commanded = std::any_of(changes.begin(), changes.end(), [&](const auto& change) {
+            return change.button == button;
+        });
+        if (!commanded) encode_change(core::ButtonChange{button, false}, batch);
+    }
     return batch;
+}
+
+void PointerEncoder::release_failed(core::Button button) noexcept {
+    down_[index(button)] = true;
+    release_pending_[index(button)] = true;
 }
 
 EventBatch PointerEncoder::release_all() noexcept {
     EventBatch batch;
-    for (core::Button button : all_buttons)
+    for (core::Button button : all_buttons) {
+        release_pending_[index(button)] = false;
         encode_change(core::ButtonChange{button, false}, batch);
+    }
     return batch;
 }
 

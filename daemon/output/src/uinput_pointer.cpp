@@ -140,10 +140,12 @@ void UinputPointer::release_all(core::Timestamp /*timestamp*/) noexcept {
 
 void UinputPointer::write(const EventBatch& batch) noexcept {
     // The kernel stamps each event itself; the frame's timestamp is for the file sink only.
-    for (const EvdevEvent& event : batch.events()) {
-        const int result =
-            libevdev_uinput_write_event(device_.get(), event.type, event.code, event.value);
-        if (result < 0) last_error_ = -result;
+    const int error = write_batch(encoder_, batch, [&](const EvdevEvent& event) {
+        return libevdev_uinput_write_event(device_.get(), event.type, event.code, event.value);
+    });
+    if (error != 0) {
+        last_error_ = error;
+        ++failed_writes_;
     }
 }
 

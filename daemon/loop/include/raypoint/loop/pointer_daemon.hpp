@@ -75,6 +75,7 @@ class PointerDaemon {
     void on_lost(const std::string& reason);
     void pause();
     void resume();
+    void check_output();    // after each emit: log the start and the end of failing writes
     bool handle_signals();  // false: stop
     void handle_control();
     void reload();
@@ -102,6 +103,8 @@ class PointerDaemon {
     core::FrameResult last_result_{};
     cv::Point2d recenter_offset_{0.0, 0.0};
     long long lost_count_ = 0;
+    long long failed_writes_seen_ = 0;
+    bool output_failing_ = false;  // the last frame's write failed
 };
 
 }  // namespace raypoint::daemon

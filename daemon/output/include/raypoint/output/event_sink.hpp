@@ -34,6 +34,8 @@ class EventSink {
     virtual std::string_view name() const = 0;
     // The errno of the most recent failed write, 0 when every write so far succeeded.
     virtual int last_error() const noexcept { return 0; }
+    // Batches (one a command or release_all) with a failed write, since the start.
+    virtual long long failed_writes() const noexcept { return 0; }
 };
 
 // Drops everything: the daemon's own cost without an output (benchmarks).

@@ -42,6 +42,7 @@ class UinputPointer final : public EventSink {
     void release_all(core::Timestamp timestamp) noexcept override;
     std::string_view name() const override { return "uinput"; }
     int last_error() const noexcept override { return last_error_; }
+    long long failed_writes() const noexcept override { return failed_writes_; }
 
     // /dev/input/eventN of the device; empty when libevdev cannot tell (no sysfs).
     std::string_view devnode() const noexcept { return devnode_; }
@@ -58,6 +59,7 @@ class UinputPointer final : public EventSink {
     std::string devnode_;
     PointerEncoder encoder_;
     int last_error_ = 0;
+    long long failed_writes_ = 0;
 };
 
 }  // namespace raypoint::daemon
