@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # Regenerates every picture in docs/pictures/ from scenes rendered on the spot, with raypoint's
 # own commands (preview --headless, track --plot). usage: docs/make-pictures.sh [BUILD_DIR]
 # (or `cmake --build build --target docs-pictures`). Screenshots are JPEG (a rendered camera

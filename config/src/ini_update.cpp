@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/config/ini_update.hpp"
 
 #include <cerrno>

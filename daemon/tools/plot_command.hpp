@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint plot TRACK.jsonl -o OUT.png [--events FILE]`: x, y, z and the state band over time.
 

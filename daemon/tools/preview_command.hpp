@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint preview [--camera DEV | --input CLIP]`: the camera picture with the tracker's view
 // drawn on it, live, with trackbars for the most-tuned settings (preview_window.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "preview_input.hpp"
 
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Where preview and setup get frames: a recorded clip (--input), or the camera (--camera, else
 // the configured [camera] device). Opening the camera while `raypoint run` is running first

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The preview's loop, shared by `raypoint preview` and `raypoint setup`'s try-it step: frames
 // from a FrameSource through a PreviewSession, shown in an OpenCV highgui window with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint setup`: a guided first run that measures the user (hand size, motion range, push
 // depth), proposes [pointer] gain, the active region and [click] press_rise/release_rise, lets

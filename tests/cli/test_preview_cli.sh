@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # The pictures end to end on rendered clips: `preview --headless` against the truth (the
 # centroid marker within 3 px of the true centroid, the state text of the tracker's state), `plot`
 # and `track --plot` against the track, `setup --headless` on a push clip (its press_rise clicks

@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # raypoint preview with its window (OpenCV highgui, trackbars) under a virtual X server: 60
 # frames of a rendered clip at the clip's pace, the last picture saved and checked against the
 # truth as the headless one is (test_preview_cli.sh). Skipped (77) without xvfb-run.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "fault_harness.hpp"
 
 #include <linux/input-event-codes.h>

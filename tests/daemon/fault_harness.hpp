@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // What the daemon's fault tests drive PointerDaemon::run() with: a rendered clip as a camera that
 // misbehaves on cue (ScriptedSource), and an output that encodes and writes exactly as the uinput

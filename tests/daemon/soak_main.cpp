@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // raypoint-soak: hours of frames through the daemon's loop, faster than real time.
 //   raypoint-soak [--frames N] [--clip PRESET]
 // The rendered clip (default `click`: the hand moves, pushes once, moves on; 320x240, 30 fps) is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The daemon under faults, through its seams (FrameSource, EventSink), each with one contract:
 // no crash, no click the user did not make, no button left pressed, the state reported (ctl
 // status), and recovery when the fault ends. Rendered clips (320x240, 30 fps) run through

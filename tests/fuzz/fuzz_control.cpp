@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A control request of any bytes, as the daemon reads it from a client (at most
 // control_request_limit of them): a command exactly when its first line is one of the names,
 // nothing otherwise, never a crash.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // A configuration file of any bytes through the parser, the schema's values, the preset and the
 // cross-checks: every outcome is a Config or messages, never a crash. A file that loads without
 // error prints (to_ini) as a file that loads again to the same text: print-config's output is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // `--set section.key=value` options of any bytes (one a line), applied in turn to the default
 // configuration as the command line does, then the cross-checks: each assignment is taken or
 // refused with a ConfigError naming it, never a crash. A configuration the checks accept prints

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The libFuzzer entry point every target in tests/fuzz defines. Built with clang and
 // -fsanitize=fuzzer it is driven by libFuzzer; in the normal build replay_main.cpp calls it on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The core as the daemon drives it, on frames and timestamps no camera should send: any size from
 // 1x1 to 640x480, BGR or YUYV, rows padded to odd strides; constant, saturated, black, noise,
 // a bright disc (so the tracker reaches TRACKING and its estimators run), the same frame again,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The regression side of a fuzz target: runs LLVMFuzzerTestOneInput on every file named on the
 // command line, or in a directory named there, and says how many it ran. A crash or a sanitizer
 // report stops it as it stops libFuzzer; an empty directory is an error, so a corpus that went

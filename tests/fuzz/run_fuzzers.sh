@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: MIT
 # Runs each libFuzzer target of a -DBUILD_FUZZERS=ON build for SECONDS, from its seed corpus
 # (tests/fuzz/corpus/NAME, read only) and a working corpus in the build directory, and prints
 # one row a target: executions, inputs in the working corpus, crashes. A crash, a leak, a

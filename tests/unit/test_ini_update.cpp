@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Writing settings back into an INI file (preview's save key, setup): values change in place,
 // comments and order stay, missing keys and sections are added, the result reads back.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The pictures of daemon/view: the plot puts each series, the state band and the clicks where
 // its layout says, and the preview's state text is told apart from every other state's.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // raypoint-check-view: checks the pictures raypoint draws against what they must show, for the
 // CLI tests (tests/cli/test_preview_cli.sh). Exit 0 when the picture is right, 1 with the reason.
 //   check-view screenshot SHOT.png CX CY STATE   the preview's centroid marker within 3 px of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The text of the pictures: numbers formatted printf-style, labels in OpenCV's plain font.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/view/overlay.hpp"
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/view/plot.hpp"
 
 #include <algorithm>

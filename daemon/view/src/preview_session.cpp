@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/view/preview_session.hpp"
 
 #include <algorithm>

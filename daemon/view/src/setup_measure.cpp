@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/view/setup_measure.hpp"
 
 #include <algorithm>

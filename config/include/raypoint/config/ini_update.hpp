@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // Writing settings back into a user's INI file (raypoint preview's save key, raypoint setup):
 // each key's line is changed in place, so the file keeps its comments, its order and every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The tracker's view drawn over a frame: the edge or difference image, the selected blocks, the
 // rays, the inner point, the centroid and, on a frame that ran RECOVERING, the recovery points.

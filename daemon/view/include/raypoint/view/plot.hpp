@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint plot`: a track's x, y and z over time, the tracker's state as a band of colours
 // under them and the clicks as vertical lines, drawn with OpenCV into one picture.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The preview's frame-by-frame work, without a window: each frame is tracked, timed and fed to
 // the pointer (whose commands go nowhere: the click machine is what the preview shows), and

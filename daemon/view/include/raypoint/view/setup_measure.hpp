@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint setup`'s measurements: from the tracker's results over a guided run (hold still,
 // move across the view, push a few times), the hand's size, the motion range and the push depth,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // A track over time, as `raypoint plot` draws it: read back from `raypoint track`'s JSONL (and
 // a file sink's events for the clicks), or collected while tracking (`track --plot`).
