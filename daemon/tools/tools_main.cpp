@@ -6,6 +6,7 @@
 #include "bench_command.hpp"
 #include "compare_command.hpp"
 #include "demo_command.hpp"
+#include "eval_clicks_command.hpp"
 #include "raypoint/cli/cli.hpp"
 #include "recorded_source.hpp"
 #include "track_command.hpp"
@@ -18,6 +19,7 @@ std::optional<int> video_command(std::string_view command, std::span<const std::
     if (command == "demo") return demo_command(args);
     if (command == "compare-estimators") return compare_command(args);
     if (command == "bench") return bench_command(args);
+    if (command == "eval-clicks") return eval_clicks_command(args);
     return std::nullopt;
 }
 

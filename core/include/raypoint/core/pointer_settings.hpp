@@ -62,6 +62,11 @@ struct ClickSettings {
     // A rise slower than this is an approach, not a push: with 0.35 s ordinary approaches reach
     // 0.19, a hair under the press; 0.25 s still allows a push 1.5x slower than the scene's.
     double push_seconds = 0.25;
+    // The rise must stay at press_rise this long (frame time) to press, and at release_rise this
+    // long to release: the area of a single frame can jump 25-70% and come back (a bad edge,
+    // a blurred frame), and one frame must neither press nor release. Frame time, so 10, 30 and
+    // 60 fps need the same time, not the same number of frames.
+    double press_hold_seconds = 0.0;
     // No press for this long after a release: a target that wobbles back does not click twice.
     double refractory_seconds = 0.3;
     double drag_seconds = 0.8;  // held pushed this long: a drag, x and y move again
