@@ -253,6 +253,11 @@ const std::vector<Key>& schema() {
             "release_rise to release): one odd frame neither presses nor releases",
             [](auto& c) -> auto& { return c.core.pointer.click.press_hold_seconds; }),
         real_key(
+            "click", "release_drop", 0.0, 0.9,
+            "the button also comes up when sqrt(area) falls this far below its largest while "
+            "down (0.25 = 25%; 0 = off): a drag that changed the size still releases",
+            [](auto& c) -> auto& { return c.core.pointer.click.release_drop; }),
+        real_key(
             "click", "refractory_seconds", 0.0, 10.0,
             "seconds after a release during which no press can come",
             [](auto& c) -> auto& { return c.core.pointer.click.refractory_seconds; }),

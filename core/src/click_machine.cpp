@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "raypoint/core/click_machine.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace raypoint::core {
@@ -113,6 +114,13 @@ void ClickMachine::release() noexcept {
     held_since_.reset();
 }
 
+bool ClickMachine::pulled_back() noexcept {
+    peak_ = std::max(peak_, scale_);
+    const bool dropped =
+        settings_.release_drop > 0.0 && scale_ <= peak_ * (1.0 - settings_.release_drop);
+    return held(rise_ <= settings_.release_rise || dropped);
+}
+
 void ClickMachine::on_inactive() noexcept {
     // The baseline is wherever the target is until clicks are allowed: a target that entered
     // the view growing starts from its size at that moment, not from a stale average.
@@ -146,6 +154,7 @@ void ClickMachine::on_rising() noexcept {
         result_.press = true;
         result_.push_began = push_began_;
         held_since_.reset();
+        peak_ = scale_;
     } else if (!in_time && !high) {
         state_ = ClickState::drifting;
         follow_baseline();
@@ -158,7 +167,7 @@ void ClickMachine::on_drifting() noexcept {
 }
 
 void ClickMachine::on_pressed() noexcept {
-    if (held(rise_ <= settings_.release_rise)) {
+    if (pulled_back()) {
         release();
     } else if (seconds_since(pressed_at_) >= settings_.drag_seconds) {
         state_ = ClickState::dragging;
@@ -166,7 +175,7 @@ void ClickMachine::on_pressed() noexcept {
 }
 
 void ClickMachine::on_dragging() noexcept {
-    if (held(rise_ <= settings_.release_rise)) release();
+    if (pulled_back()) release();
 }
 
 void ClickMachine::on_refractory() noexcept {

@@ -23,6 +23,7 @@ Settings paper_settings() {
     click.release_rise = 0.10;
     click.push_seconds = 0.25;
     click.press_hold_seconds = 0.0;
+    click.release_drop = 0.0;
     click.refractory_seconds = 0.3;
     click.drag_seconds = 0.8;
     click.baseline_seconds = 1.0;

@@ -51,8 +51,7 @@ void print_tallies(std::FILE* out, const Tallies& tallies) {
         std::fprintf(out, "| %s | %d | %s | %s | %s | %s | %s | %s | %s | %d | %s |\n",
                      group.c_str(), t.gestures(), percent(t.pushes_pressed, t.gestures()).c_str(),
                      percent(t.clicks_found, t.clicks).c_str(),
-                     percent(t.drags_found, t.drags).c_str(),
-                     percent(t.matched, t.presses).c_str(),
+                     percent(t.drags_found, t.drags).c_str(), percent(t.matched, t.presses).c_str(),
                      number(median(t.latencies) * 1000, "%.0f").c_str(),
                      number(median(t.offsets), "%.1f").c_str(),
                      number(t.motion_seconds / 60, "%.1f").c_str(), t.false_clicks,
@@ -61,8 +60,9 @@ void print_tallies(std::FILE* out, const Tallies& tallies) {
 }
 
 void print_sweep(std::FILE* out, const std::vector<SweepPoint>& points) {
-    std::fprintf(out, "| series | setting | target pushes pressed | false clicks / min |\n"
-                      "|---|---|---|---|\n");
+    std::fprintf(out,
+                 "| series | setting | target pushes pressed | false clicks / min |\n"
+                 "|---|---|---|---|\n");
     for (const SweepPoint& p : points) {
         std::fprintf(out, "| %s | %s | %.1f%% | %.2f |\n", p.series.c_str(), p.label.c_str(),
                      100 * p.recall, p.false_per_minute);
@@ -70,7 +70,7 @@ void print_sweep(std::FILE* out, const std::vector<SweepPoint>& points) {
 }
 
 void plot_sweep(const std::string& path, const std::vector<SweepPoint>& points) {
-    const cv::Size size(900, 600);
+    const cv::Size size(960, 600);
     const cv::Rect area(90, 40, 600, 480);
     cv::Mat image(size, CV_8UC3, cv::Scalar(255, 255, 255));
     double max_false = 0.5;
@@ -102,11 +102,11 @@ void plot_sweep(const std::string& path, const std::vector<SweepPoint>& points) 
     cv::rectangle(image, at(0, 1), at(std::min(0.1, max_false), 0.95), cv::Scalar(200, 240, 200),
                   cv::FILLED);
     cv::rectangle(image, area, black);
-    cv::putText(image, "false clicks per minute of non-push motion", {area.x + 120, size.height - 25},
-                font, 0.5, black);
-    cv::putText(image, "recall: pushes >= 15% closer within 0.6 s that pressed", {area.x, 25},
-                font, 0.5, black);
-    const cv::Scalar colours[] = {{200, 60, 30}, {30, 140, 30}, {30, 30, 200},
+    cv::putText(image, "false clicks per minute of non-push motion",
+                {area.x + 120, size.height - 25}, font, 0.5, black);
+    cv::putText(image, "recall: pushes >= 15% closer within 0.6 s that pressed", {area.x, 25}, font,
+                0.5, black);
+    const cv::Scalar colours[] = {{200, 60, 30},  {30, 140, 30}, {30, 30, 200},
                                   {160, 30, 160}, {0, 140, 200}, {90, 90, 90}};
     std::map<std::string, std::vector<const SweepPoint*>> series;
     std::vector<std::string> names;

@@ -4,12 +4,12 @@
 
 #include <atomic>
 #include <cmath>
-#include <optional>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -38,13 +38,13 @@ struct EvalOptions {
     // the file exists (remove them after changing tracking settings or the tracker): a sweep
     // of the click settings on the same tracking, in seconds.
     std::string cache_dir;
-    bool misses = false;  // --misses: why each miss and false press happened, on stderr
+    bool misses = false;             // --misses: why each miss and false press happened, on stderr
     std::vector<std::string> clips;  // recorded: VIDEO, truth in VIDEO.clicks
     // --require: limits on the overall figures (the target pushes' recall); exit 1 when missed.
-    std::optional<double> min_recall;        // fraction
-    std::optional<double> max_false;         // per minute
-    std::optional<double> max_latency_ms;    // median
-    std::optional<double> max_offset_px;     // median
+    std::optional<double> min_recall;      // fraction
+    std::optional<double> max_false;       // per minute
+    std::optional<double> max_latency_ms;  // median
+    std::optional<double> max_offset_px;   // median
 };
 
 double parse_real(std::string_view option, std::string_view text) {
@@ -148,8 +148,11 @@ TrackedClip cached_track(const scene::GestureClip& clip, const core::Settings& s
     std::filesystem::create_directories(dir);
     std::ofstream out(path, std::ios::binary);
     for (const core::FrameResult& r : tracked.results) {
-        const CachedResult c{r.timestamp, static_cast<std::int32_t>(r.state),
-                             r.has_position ? 1 : 0, r.position.x, r.position.y,
+        const CachedResult c{r.timestamp,
+                             static_cast<std::int32_t>(r.state),
+                             r.has_position ? 1 : 0,
+                             r.position.x,
+                             r.position.y,
                              r.area.value_or(-1.0)};
         out.write(reinterpret_cast<const char*>(&c), sizeof c);
     }
@@ -210,7 +213,7 @@ std::vector<SweepPoint> sweep(const std::vector<TrackedClip>& clips,
     for (const double hold : {0.0, 0.05}) {
         for (const double push : {0.25, 0.4, 0.6}) {
             char series[64];
-            std::snprintf(series, sizeof series, "push_seconds %.2f, hold %.2f", push, hold);
+            std::snprintf(series, sizeof series, "push %.2f s, hold %.2f s", push, hold);
             for (const double rise : {0.10, 0.12, 0.14, 0.16, 0.18, 0.20, 0.25}) {
                 core::PointerSettings settings = base;
                 settings.click.press_rise = rise;
@@ -259,7 +262,8 @@ void write_set(const std::vector<scene::GestureClip>& set, const std::string& di
         const std::string video = dir + "/" + clip.spec.name + ".mp4";
         cv::VideoWriter writer(video, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), clip.spec.fps,
                                cv::Size(clip.spec.width, clip.spec.height));
-        if (!writer.isOpened()) throw InputError(video + ": cannot write (OpenCV VideoWriter, mp4v)");
+        if (!writer.isOpened())
+            throw InputError(video + ": cannot write (OpenCV VideoWriter, mp4v)");
         for (int i = 0; i < renderer.frame_count(); ++i)
             writer.write(renderer.render(i).bgr);
         std::ofstream truth(video + ".clicks");
@@ -279,9 +283,9 @@ int eval_clicks_command(std::span<const std::string_view> args) {
             throw InputError(clip + ".clicks: no click truth beside the clip");
     }
     cv::setNumThreads(1);
-    const std::vector<scene::GestureClip> set =
-        options.set == "none" ? std::vector<scene::GestureClip>{}
-                              : scene::gesture_set(options.set, options.seed);
+    const std::vector<scene::GestureClip> set = options.set == "none"
+                                                    ? std::vector<scene::GestureClip>{}
+                                                    : scene::gesture_set(options.set, options.seed);
     if (!options.write_dir.empty()) {
         write_set(set, options.write_dir);
         return 0;

@@ -65,6 +65,7 @@ class ClickMachine {
     // Whether `condition` has held for press_hold_seconds up to this frame.
     bool held(bool condition) noexcept;
     void release() noexcept;
+    bool pulled_back() noexcept;  // PRESSED, DRAGGING: the release's condition
 
     ClickSettings settings_;
     ClickState state_ = ClickState::inactive;
@@ -77,6 +78,7 @@ class ClickMachine {
     // Since when the rise has been at press_rise (RISING) or at release_rise (PRESSED,
     // DRAGGING) without a break; nothing while it is not.
     std::optional<Timestamp> held_since_;
+    double peak_ = 0.0;  // the largest sqrt(area) since the press
 
     // The frame being stepped.
     Timestamp now_ = 0;
