@@ -25,12 +25,9 @@ constexpr double target_seconds = 0.6;
 constexpr double screen_px = 1920.0;
 
 core::FrameView view_of(const cv::Mat& bgr, core::Timestamp timestamp) {
-    return core::FrameView{bgr.data,
-                           bgr.cols,
-                           bgr.rows,
-                           static_cast<int>(bgr.step),
-                           core::PixelFormat::bgr,
-                           timestamp};
+    return core::FrameView{
+        bgr.data, bgr.cols, bgr.rows, static_cast<int>(bgr.step), core::PixelFormat::bgr,
+        timestamp};
 }
 
 std::vector<scene::IntendedClick> sorted(std::vector<scene::IntendedClick> clicks) {
@@ -114,7 +111,8 @@ TrackedClip track_rendered(const scene::GestureClip& clip, const core::Settings&
     tracked.results.reserve(static_cast<std::size_t>(renderer.frame_count()));
     for (int i = 0; i < renderer.frame_count(); ++i) {
         const scene::RenderedFrame frame = renderer.render(i);
-        tracked.results.push_back(tracker.process(view_of(frame.bgr, core::seconds_to_us(renderer.frame_time(i)))));
+        tracked.results.push_back(
+            tracker.process(view_of(frame.bgr, core::seconds_to_us(renderer.frame_time(i)))));
     }
     return tracked;
 }

@@ -44,12 +44,12 @@ struct Tally {
     int clicks = 0;        // intended
     int clicks_found = 0;  // pressed and released before a drag began
     int drags = 0;
-    int drags_found = 0;   // pressed and held into a drag
+    int drags_found = 0;     // pressed and held into a drag
     int pushes_pressed = 0;  // intended clicks and drags with a press at all
-    int presses = 0;       // all presses in push clips
-    int matched = 0;       // of those, one for an intended click or drag
+    int presses = 0;         // all presses in push clips
+    int matched = 0;         // of those, one for an intended click or drag
     double motion_seconds = 0;
-    int false_clicks = 0;  // presses during non-push motion
+    int false_clicks = 0;           // presses during non-push motion
     std::vector<double> latencies;  // s, push start -> press
     std::vector<double> offsets;    // device px, cursor at the press - cursor at push start
 

@@ -216,7 +216,8 @@ GestureClip motion_clip(std::uint32_t seed, int index, const std::string& motion
             Keyframe k = base(t);
             int n = 0;
             const double u = cycle(t, from + 1, 4.1 + out, n);
-            const double gone = t < from + 1 ? 0 : smoothstep(u / 0.5) - smoothstep((u - 0.5 - out) / 0.6);
+            const double gone =
+                t < from + 1 ? 0 : smoothstep(u / 0.5) - smoothstep((u - 0.5 - out) / 0.6);
             const double edge = n % 2 == 0 ? 1.4 : -0.4;
             k.x += (edge - k.x) * gone;
             return k;
@@ -267,7 +268,7 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
         throw std::invalid_argument("gesture set '" + std::string(name) +
                                     "': unknown (allowed: full, ci)");
     }
-    const std::vector<std::string> motions = {"lean", "walk",       "swipe", "turn",
+    const std::vector<std::string> motions = {"lean",    "walk",       "swipe", "turn",
                                               "reenter", "brightness", "wander"};
     std::vector<GestureClip> clips;
     for (int i = 0; i < push_clips; ++i)
@@ -290,8 +291,8 @@ std::string click_truth_text(const GestureClip& clip) {
     char line[160];
     for (const IntendedClick& c : clip.clicks) {
         std::snprintf(line, sizeof line, "%s %.3f %.3f %.3f %.3f %.3f\n",
-                      std::string(to_string(c.kind)).c_str(), c.start, c.press, c.release,
-                      c.depth, c.seconds);
+                      std::string(to_string(c.kind)).c_str(), c.start, c.press, c.release, c.depth,
+                      c.seconds);
         text += line;
     }
     if (clip.motion_to > clip.motion_from) {
