@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "click_eval.hpp"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint eval-clicks`: the tracker once over each clip, then the pointer (the daemon's own
 // core::PointerController, with any click settings) over the tracker's results, scored against

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The text and the plot of `raypoint eval-clicks`.
 

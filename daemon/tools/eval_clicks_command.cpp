@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "eval_clicks_command.hpp"
 
 #include <unistd.h>

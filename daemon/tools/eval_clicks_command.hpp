@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // `raypoint eval-clicks [--set-name full|ci|none] [--seed N] [--jobs N] [--sweep] [--plot PNG]
 // [--write DIR] [CLIP...]`: the pointer on the click gesture set (and on recorded clips, each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #include "raypoint/scene/gesture_set.hpp"
 
 #include <algorithm>

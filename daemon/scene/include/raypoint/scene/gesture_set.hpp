@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 #pragma once
 // The click gesture set: clips of pushes toward the camera drawn from ranges (depth, duration,
 // hold, target, background, frame rate, camera) and clips of motion that must never click
