@@ -248,6 +248,16 @@ const std::vector<Key>& schema() {
             "seconds from the push's beginning to the press at most; slower is an approach",
             [](auto& c) -> auto& { return c.core.pointer.click.push_seconds; }),
         real_key(
+            "click", "press_hold_seconds", 0.0, 1.0,
+            "seconds of frame time the rise must stay at press_rise to press (and at "
+            "release_rise to release): one odd frame neither presses nor releases",
+            [](auto& c) -> auto& { return c.core.pointer.click.press_hold_seconds; }),
+        real_key(
+            "click", "release_drop", 0.0, 0.9,
+            "the button also comes up when sqrt(area) falls this far below its largest while "
+            "down (0.25 = 25%; 0 = off): a drag that changed the size still releases",
+            [](auto& c) -> auto& { return c.core.pointer.click.release_drop; }),
+        real_key(
             "click", "refractory_seconds", 0.0, 10.0,
             "seconds after a release during which no press can come",
             [](auto& c) -> auto& { return c.core.pointer.click.refractory_seconds; }),

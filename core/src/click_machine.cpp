@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "raypoint/core/click_machine.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace raypoint::core {
@@ -30,6 +31,7 @@ ClickMachine::ClickMachine(const ClickSettings& settings) noexcept : settings_(s
 bool ClickMachine::release_all() noexcept {
     const bool down = state_ == ClickState::pressed || state_ == ClickState::dragging;
     state_ = ClickState::inactive;
+    held_since_.reset();
     return down;
 }
 
@@ -96,6 +98,29 @@ void ClickMachine::follow_baseline() noexcept {
     baseline_ += alpha * (scale_ - baseline_);
 }
 
+bool ClickMachine::held(bool condition) noexcept {
+    if (!condition) {
+        held_since_.reset();
+        return false;
+    }
+    if (!held_since_) held_since_ = now_;
+    return seconds_since(*held_since_) >= settings_.press_hold_seconds;
+}
+
+void ClickMachine::release() noexcept {
+    state_ = ClickState::refractory;
+    released_at_ = now_;
+    result_.release = true;
+    held_since_.reset();
+}
+
+bool ClickMachine::pulled_back() noexcept {
+    peak_ = std::max(peak_, scale_);
+    const bool dropped =
+        settings_.release_drop > 0.0 && scale_ <= peak_ * (1.0 - settings_.release_drop);
+    return held(rise_ <= settings_.release_rise || dropped);
+}
+
 void ClickMachine::on_inactive() noexcept {
     // The baseline is wherever the target is until clicks are allowed: a target that entered
     // the view growing starts from its size at that moment, not from a stale average.
@@ -107,6 +132,7 @@ void ClickMachine::on_inactive() noexcept {
 void ClickMachine::on_idle() noexcept {
     if (rise_ > settings_.start_rise) {
         push_began_ = last_frame_;
+        held_since_.reset();
         state_ = ClickState::rising;
         on_rising();  // a low frame rate may bring the whole push in one frame
         return;
@@ -116,15 +142,20 @@ void ClickMachine::on_idle() noexcept {
 
 void ClickMachine::on_rising() noexcept {
     const bool in_time = seconds_since(push_began_) <= settings_.push_seconds;
+    // The rise must reach press_rise within push_seconds; holding it there may take longer.
+    const bool high = rise_ >= settings_.press_rise && (in_time || held_since_);
     if (rise_ <= settings_.start_rise) {
         state_ = ClickState::idle;
+        held_since_.reset();
         follow_baseline();
-    } else if (in_time && rise_ >= settings_.press_rise) {
+    } else if (held(high)) {
         state_ = ClickState::pressed;
         pressed_at_ = now_;
         result_.press = true;
         result_.push_began = push_began_;
-    } else if (!in_time) {
+        held_since_.reset();
+        peak_ = scale_;
+    } else if (!in_time && !high) {
         state_ = ClickState::drifting;
         follow_baseline();
     }
@@ -136,21 +167,15 @@ void ClickMachine::on_drifting() noexcept {
 }
 
 void ClickMachine::on_pressed() noexcept {
-    if (rise_ <= settings_.release_rise) {
-        state_ = ClickState::refractory;
-        released_at_ = now_;
-        result_.release = true;
+    if (pulled_back()) {
+        release();
     } else if (seconds_since(pressed_at_) >= settings_.drag_seconds) {
         state_ = ClickState::dragging;
     }
 }
 
 void ClickMachine::on_dragging() noexcept {
-    if (rise_ <= settings_.release_rise) {
-        state_ = ClickState::refractory;
-        released_at_ = now_;
-        result_.release = true;
-    }
+    if (pulled_back()) release();
 }
 
 void ClickMachine::on_refractory() noexcept {

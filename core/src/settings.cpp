@@ -15,6 +15,18 @@ Settings paper_settings() {
     settings.tracking.abandon_seconds = 0.0;
     settings.tracking.search_weighting = SearchWeighting::all;
     settings.output.smoothing = SmoothingKind::ema;
+    // The paper has no clicks; the preset keeps the click by depth it was first measured with
+    // (docs/pointer.md), whatever the defaults become.
+    ClickSettings& click = settings.pointer.click;
+    click.start_rise = 0.05;
+    click.press_rise = 0.20;
+    click.release_rise = 0.10;
+    click.push_seconds = 0.25;
+    click.press_hold_seconds = 0.0;
+    click.release_drop = 0.0;
+    click.refractory_seconds = 0.3;
+    click.drag_seconds = 0.8;
+    click.baseline_seconds = 1.0;
     return settings;
 }
 

@@ -16,8 +16,8 @@ namespace raypoint::daemon {
 
 bool needs_video_tools(std::span<const std::string_view> args) {
     if (args.empty()) return false;
-    constexpr std::array<std::string_view, 7> video_commands{
-        "track", "demo", "compare-estimators", "bench", "plot", "preview", "setup"};
+    constexpr std::array<std::string_view, 8> video_commands{
+        "track", "demo", "compare-estimators", "bench", "eval-clicks", "plot", "preview", "setup"};
     // Help comes from the command table, which this binary holds too (raypoint-tools may be
     // missing: the help still says what the command would do).
     const auto options_end = std::find(args.begin(), args.end(), "--");

@@ -9,8 +9,8 @@
 
 namespace raypoint::daemon {
 
-// True for track, demo, compare-estimators, bench, plot, preview, setup, and run with --input;
-// false with --help.
+// True for track, demo, compare-estimators, bench, eval-clicks, plot, preview, setup,
+// and run with --input; false with --help.
 bool needs_video_tools(std::span<const std::string_view> args);
 
 // Replaces this process by raypoint-tools with the same arguments. Returns only on failure,

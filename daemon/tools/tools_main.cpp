@@ -6,6 +6,7 @@
 #include "bench_command.hpp"
 #include "compare_command.hpp"
 #include "demo_command.hpp"
+#include "eval_clicks_command.hpp"
 #include "plot_command.hpp"
 #include "preview_command.hpp"
 #include "raypoint/cli/cli.hpp"
@@ -24,6 +25,7 @@ std::optional<int> video_command(std::string_view command, std::span<const std::
     if (command == "plot") return plot_command(args);
     if (command == "preview") return preview_command(args);
     if (command == "setup") return setup_command(args);
+    if (command == "eval-clicks") return eval_clicks_command(args);
     return std::nullopt;
 }
 

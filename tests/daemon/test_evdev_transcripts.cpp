@@ -45,6 +45,8 @@ core::PointerSettings settings(core::PointerMode mode) {
     s.click.press_rise = 0.20;
     s.click.release_rise = 0.10;
     s.click.push_seconds = 0.35;
+    s.click.press_hold_seconds = 0.0;  // a press on the first frame at press_rise
+    s.click.release_drop = 0.0;
     s.click.refractory_seconds = 0.3;
     s.click.baseline_seconds = 1000.0;  // the baseline stays where tracking started
     s.safety.min_tracking_seconds = 0.2;

@@ -30,7 +30,15 @@ PointerSettings depth() {
     s.click.refractory_seconds = 0.3;
     s.click.drag_seconds = 0.8;
     s.click.baseline_seconds = 1000.0;
+    s.click.press_hold_seconds = 0.0;
+    s.click.release_drop = 0.0;
     s.safety.min_tracking_seconds = 0.2;
+    return s;
+}
+
+PointerSettings held_depth() {
+    PointerSettings s = depth();
+    s.click.press_hold_seconds = 0.05;
     return s;
 }
 
@@ -53,6 +61,69 @@ TEST(ClickMachine, PushPressesAndPullingBackReleases) {
         {1100,   T,       0.5,  0.5,  0.200,  "refractory", ""},
         {1299,   T,       0.5,  0.5,  0.200,  "refractory", ""},
         {1301,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+    });
+    // clang-format on
+}
+
+TEST(ClickMachine, OneFrameOfAreaNeitherPressesNorReleases) {
+    // press_hold_seconds 0.05: at 10 fps the rise must be at the press on two frames in a row
+    // (0.1 s apart), and at the release on two frames.
+    PointerController pointer(held_depth(), aspect);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.5,  0.340,  "rising",     ""},       // +70%, one frame
+        { 500,   T,       0.5,  0.5,  0.200,  "idle",       ""},       // back: no click
+        { 600,   T,       0.5,  0.5,  0.215,  "rising",     ""},       // a push
+        { 700,   T,       0.5,  0.5,  0.245,  "rising",     ""},       // at the press since 700
+        { 800,   T,       0.5,  0.5,  0.260,  "pressed",    "+left"},  // held 0.1 s
+        { 900,   T,       0.5,  0.5,  0.200,  "pressed",    ""},       // one frame down
+        {1000,   T,       0.5,  0.5,  0.260,  "pressed",    ""},       // still pressed
+        {1100,   T,       0.5,  0.5,  0.215,  "pressed",    ""},       // at the release since
+        {1200,   T,       0.5,  0.5,  0.205,  "refractory", "-left"},  // held 0.1 s
+    });
+    // clang-format on
+}
+
+TEST(ClickMachine, PullingBackFromADragThatGrewTheTargetReleases) {
+    // The drag carried the target where it looks bigger: pulled back, its size is still 15% over
+    // the old baseline (over release_rise), but 30% under its largest while down.
+    PointerSettings settings = depth();
+    settings.click.release_drop = 0.25;
+    PointerController pointer(settings, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.5,  0.230,  "rising",     ""},
+        { 500,   T,       0.5,  0.5,  0.260,  "pressed",    "+left"},
+        { 900,   T,       0.5,  0.5,  0.300,  "pressed",    ""},
+        {1300,   T,       0.5,  0.5,  0.330,  "dragging",   ""},       // largest: 0.33
+        {1400,   T,       0.5,  0.5,  0.270,  "dragging",   ""},       // 18% under it
+        {1500,   T,       0.5,  0.5,  0.230,  "refractory", "-left"},  // 30% under it
+    });
+    // clang-format on
+}
+
+TEST(ClickMachine, AHeldRiseReachedInTimePressesAfterPushSeconds) {
+    // The rise reaches the press 0.3 s in (within push_seconds, 0.35 s); holding it there ends
+    // at 0.4 s, after push_seconds: still a press.
+    PointerSettings settings = depth();
+    settings.click.press_hold_seconds = 0.1;
+    PointerController pointer(settings, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.5,  0.215,  "rising",     ""},
+        { 500,   T,       0.5,  0.5,  0.230,  "rising",     ""},
+        { 600,   T,       0.5,  0.5,  0.245,  "rising",     ""},       // at the press, 0.3 s
+        { 700,   T,       0.5,  0.5,  0.250,  "pressed",    "+left"},  // held 0.1 s, 0.4 s in
     });
     // clang-format on
 }
@@ -259,7 +330,9 @@ TEST(ClickMachine, ModeOffNeverClicks) {
 
 TEST(ClickMachine, ReleasesByItselfWhenTheTargetGoesOrIsNotReady) {
     // The machine on its own, without the controller's guard: a press, then no target.
-    ClickMachine machine{ClickSettings{}};  // the defaults: press at +20% within 0.25 s
+    ClickSettings settings;  // the defaults (press at +15% within 0.25 s), pressing at once
+    settings.press_hold_seconds = 0.0;
+    ClickMachine machine{settings};
     EXPECT_EQ(machine.step(0, 0.2, true).state, ClickState::idle);
     const ClickStep press = machine.step(100'000, 0.26, true);
     EXPECT_TRUE(press.press);

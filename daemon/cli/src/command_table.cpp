@@ -75,6 +75,20 @@ constexpr std::array bench_options{
     OptionSpec{"--frames", "N", "at most N frames a clip"},
     OptionSpec{"--format", "table|markdown|jsonl", "output format (default table)"},
 };
+constexpr std::array eval_clicks_options{
+    OptionSpec{"--set-name", "full|ci|none", "the gesture set (default full)"},
+    OptionSpec{"--seed", "N", "the set's seed (default 1)"},
+    OptionSpec{"--jobs", "N", "clips tracked at once (default 1)"},
+    OptionSpec{"--sweep", "", "also sweep the click settings (a table)"},
+    OptionSpec{"--plot", "OUT.png", "the sweep, plotted"},
+    OptionSpec{"--cache", "DIR", "keep the tracker's results of rendered clips there"},
+    OptionSpec{"--misses", "", "say on stderr why each miss and false click happened"},
+    OptionSpec{"--write", "DIR", "write the set as videos with their truth, and stop"},
+    OptionSpec{"--min-recall", "F", "exit 1 when fewer target pushes press"},
+    OptionSpec{"--max-false-per-minute", "F", "exit 1 with more false clicks a minute"},
+    OptionSpec{"--max-latency-ms", "F", "exit 1 with a longer median latency"},
+    OptionSpec{"--max-offset-px", "F", "exit 1 with a larger median offset"},
+};
 constexpr std::array print_config_options{
     OptionSpec{"--defaults", "", "read no configuration file"},
 };
@@ -139,6 +153,11 @@ constexpr std::array commands{
                 "where a CLIP has truth.jsonl and masks.npz beside it; a CLIP is\n"
                 "a video or a scene folder (default: rendered scenes)",
                 bench_options, true},
+    CommandSpec{"eval-clicks", "[CLIP...]",
+                "click by depth on the rendered gesture set and on recorded\n"
+                "CLIPs (truth in CLIP.clicks): recall, false clicks, latency\n"
+                "and offset, per condition (docs/clicks.md)",
+                eval_clicks_options, true},
     CommandSpec{"print-config", "",
                 "print the effective configuration as an INI file (the file\n"
                 "raypoint run reads, see check-config, and the options below)",

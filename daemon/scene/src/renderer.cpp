@@ -77,6 +77,9 @@ void validate(const SceneSpec& s) {
     check(s.target_size_m > 0, "target_size_m must be > 0");
     check(s.push_depth >= 0 && s.push_depth < 1, "push_depth must be in [0, 1)");
     check(s.push_seconds > 0, "push_seconds must be > 0");
+    for (const SceneSpec::Push& p : s.shaped_pushes)
+        check(p.depth >= 0 && p.depth < 1 && p.seconds > 0 && p.hold >= 0,
+              "a shaped push needs depth in [0, 1), seconds > 0 and hold >= 0");
     for (const Hold& h : s.holds)
         check(h.seconds >= 0, "a hold's seconds must be >= 0");
     for (std::size_t i = 0; i < s.path.size(); ++i) {

@@ -113,23 +113,25 @@ double Trajectory::path_time(double t) const {
     return t - lost;
 }
 
+namespace {
+
+// How far into a push (0..1) its depth is at u seconds from its start: eased in over p, held
+// for `hold`, eased out over p.
+double push_share(double u, double p, double hold) {
+    if (u <= 0 || u >= 2 * p + hold) return 0;
+    if (u < p) return smoothstep(u / p);
+    if (u < p + hold) return 1;
+    return 1 - smoothstep((u - p - hold) / p);
+}
+
+}  // namespace
+
 double Trajectory::push_factor(double t) const {
-    const double p = spec_.push_seconds;
     double factor = 1;
-    for (const double start : spec_.pushes) {
-        const double u = t - start;
-        double depth = 0;
-        if (u <= 0 || u >= 2 * p + push_dwell) {
-            depth = 0;
-        } else if (u < p) {
-            depth = smoothstep(u / p);
-        } else if (u < p + push_dwell) {
-            depth = 1;
-        } else {
-            depth = 1 - smoothstep((u - p - push_dwell) / p);
-        }
-        factor *= 1 - spec_.push_depth * depth;
-    }
+    for (const double start : spec_.pushes)
+        factor *= 1 - spec_.push_depth * push_share(t - start, spec_.push_seconds, push_dwell);
+    for (const SceneSpec::Push& push : spec_.shaped_pushes)
+        factor *= 1 - push.depth * push_share(t - push.start, push.seconds, push.hold);
     return factor;
 }
 

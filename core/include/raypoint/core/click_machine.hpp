@@ -62,6 +62,10 @@ class ClickMachine {
 
     void follow_baseline() noexcept;
     double seconds_since(Timestamp then) const noexcept;
+    // Whether `condition` has held for press_hold_seconds up to this frame.
+    bool held(bool condition) noexcept;
+    void release() noexcept;
+    bool pulled_back() noexcept;  // PRESSED, DRAGGING: the release's condition
 
     ClickSettings settings_;
     ClickState state_ = ClickState::inactive;
@@ -71,6 +75,10 @@ class ClickMachine {
     Timestamp push_began_ = 0;
     Timestamp pressed_at_ = 0;
     Timestamp released_at_ = 0;
+    // Since when the rise has been at press_rise (RISING) or at release_rise (PRESSED,
+    // DRAGGING) without a break; nothing while it is not.
+    std::optional<Timestamp> held_since_;
+    double peak_ = 0.0;  // the largest sqrt(area) since the press
 
     // The frame being stepped.
     Timestamp now_ = 0;

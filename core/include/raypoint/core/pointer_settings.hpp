@@ -54,14 +54,26 @@ struct ClickSettings {
     // A push begins when the rise leaves this (40x the rendered scenes' still-hand noise of
     // 0.12%); motion after that is undone when the press comes.
     double start_rise = 0.05;
-    // The press: the rise reaches this within push_seconds of the push's beginning. The push
-    // scene's pushes reach 0.25 in 0.17 s and peak at 0.35; a hand moving closer on the other
-    // scenes reaches at most 0.14 within 0.25 s (docs/pointer.md).
-    double press_rise = 0.20;
+    // The press: the rise reaches this within push_seconds of the push's beginning. Chosen on
+    // the click gesture set (docs/clicks.md): 0.15 presses 86% of the pushes 15% or more closer
+    // within 0.6 s at 1.0 false click a minute of non-push motion; 0.20 pressed 75% at 2.5.
+    double press_rise = 0.15;
     double release_rise = 0.10;  // the release, on pulling back: half the press, for hysteresis
     // A rise slower than this is an approach, not a push: with 0.35 s ordinary approaches reach
     // 0.19, a hair under the press; 0.25 s still allows a push 1.5x slower than the scene's.
     double push_seconds = 0.25;
+    // The rise must stay at press_rise this long (frame time) to press, and at release_rise this
+    // long to release: the area of a single frame can jump 25-70% and come back (a bad edge,
+    // a blurred frame), and one frame must neither press nor release. Frame time, so 10, 30 and
+    // 60 fps need the same time, not the same number of frames.
+    // 0.05 s: the gesture set's false clicks fell from 3.6 to 1.6 a minute at press_rise 0.14
+    // for 0.6 points of recall (docs/clicks.md).
+    double press_hold_seconds = 0.05;
+    // The button also comes up when sqrt(area) falls this far (relative) below its largest value
+    // while down, held press_hold_seconds: a target's size changes with its place in the view,
+    // so after a drag the size it returns to may stay over release_rise of the old baseline.
+    // 0: off. 0.25: the gesture set's drags no longer stick (docs/clicks.md).
+    double release_drop = 0.25;
     // No press for this long after a release: a target that wobbles back does not click twice.
     double refractory_seconds = 0.3;
     double drag_seconds = 0.8;  // held pushed this long: a drag, x and y move again

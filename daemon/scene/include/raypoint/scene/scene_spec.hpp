@@ -75,6 +75,16 @@ struct SceneSpec {
     std::vector<double> pushes;
     double push_depth = 0.25;
     double push_seconds = 0.3;
+    // Pushes each with its own shape (gesture_set.hpp draws them from ranges), on top of
+    // `pushes`: depth eases down by `depth` (relative) over `seconds`, stays `hold` s, and eases
+    // back over `seconds`.
+    struct Push {
+        double start = 0;  // s
+        double depth = 0.25;
+        double seconds = 0.3;
+        double hold = 0.1;
+    };
+    std::vector<Push> shaped_pushes;
     // Sphere diameter / hand height in metres. The pinhole camera has a focal length of
     // 1.2 x height pixels: a 0.10 m target at 0.6 m spans 20% of the frame's height.
     double target_size_m = 0.10;

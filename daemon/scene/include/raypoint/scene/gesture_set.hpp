@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The click gesture set: clips of pushes toward the camera drawn from ranges (depth, duration,
+// hold, target, background, frame rate, camera) and clips of motion that must never click
+// (leaning in, walking closer, fast swipes, turning the hand, leaving and re-entering,
+// brightness jumps, ordinary wandering), each with the truth of its intended presses and
+// releases. Seeded: the same name and seed give the same clips. `raypoint eval-clicks` runs the
+// pointer on them (docs/clicks.md).
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "raypoint/scene/scene_spec.hpp"
+
+namespace raypoint::scene {
+
+enum class GestureKind {
+    click,  // push, pull back within a moment
+    drag,   // push, hold while moving sideways, pull back
+};
+
+std::string_view to_string(GestureKind kind);
+
+// One intended press and release. Times in seconds of the clip.
+struct IntendedClick {
+    GestureKind kind = GestureKind::click;
+    double start = 0;    // the target starts coming closer
+    double press = 0;    // halfway in: where a press is meant
+    double release = 0;  // halfway back out: where the release is meant
+    double depth = 0;    // relative: 0.2 = the target came 20% closer (0 when unknown)
+    double seconds = 0;  // the push's duration in (0 when unknown)
+};
+
+struct GestureClip {
+    SceneSpec spec;
+    // "push", or the motion that must never click: lean, walk, swipe, turn, reenter,
+    // brightness, wander.
+    std::string motion;
+    // Conditions for the per-condition table, in this order: target, background, fps, camera.
+    std::vector<std::pair<std::string, std::string>> conditions;
+    std::vector<IntendedClick> clicks;  // sorted by start
+    // The span of non-push motion counted for false clicks (from when clicks are allowed); empty
+    // (from == to) for push clips.
+    double motion_from = 0;
+    double motion_to = 0;
+};
+
+// "full": 110 push clips (330 pushes) and 30 motion clips (about 11 minutes of non-push motion);
+// "ci": a small fixed subset of the same kinds (6 push clips, 3 shorter motion clips).
+// Throws std::invalid_argument for another name.
+std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed = 1);
+
+// The truth file beside a clip: one line a press, "click|drag START PRESS RELEASE [DEPTH
+// SECONDS]", and "motion FROM TO" for a span of non-push motion; '#' starts a comment.
+std::string click_truth_text(const GestureClip& clip);
+
+}  // namespace raypoint::scene

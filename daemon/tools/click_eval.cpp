@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: MIT
+#include "click_eval.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include "input_error.hpp"
+#include "raypoint/core/pointer_controller.hpp"
+#include "raypoint/scene/renderer.hpp"
+#include "video_source.hpp"
+
+namespace raypoint::daemon {
+namespace {
+
+// A press counts for an intended click from the push's start until this long after its
+// intended release: a late press is still that push's, not a false click.
+constexpr double match_slack = 0.3;  // s
+// The pushes the targets are stated for: at least 15% closer within 0.6 s.
+constexpr double target_depth = 0.15;
+constexpr double target_seconds = 0.6;
+// Absolute mode: the device range mapped onto a full-HD screen's width, for offsets in pixels.
+constexpr double screen_px = 1920.0;
+
+core::FrameView view_of(const cv::Mat& bgr, core::Timestamp timestamp) {
+    return core::FrameView{
+        bgr.data, bgr.cols, bgr.rows, static_cast<int>(bgr.step), core::PixelFormat::bgr,
+        timestamp};
+}
+
+std::vector<scene::IntendedClick> sorted(std::vector<scene::IntendedClick> clicks) {
+    std::sort(clicks.begin(), clicks.end(),
+              [](const auto& a, const auto& b) { return a.start < b.start; });
+    return clicks;
+}
+
+std::string bin(double value, const std::vector<double>& edges, const char* unit) {
+    for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
+        if (value < edges[i + 1] || i + 2 == edges.size()) {
+            std::ostringstream text;
+            text << edges[i] << "-" << edges[i + 1] << unit;
+            return text.str();
+        }
+    }
+    return "?";
+}
+
+struct Press {
+    double at = 0;
+    std::optional<double> released;
+    bool dragged = false;
+    cv::Point2d cursor;  // after the press's own motion (the undo)
+};
+
+}  // namespace
+
+void Tally::add(const Tally& o) {
+    clicks += o.clicks;
+    clicks_found += o.clicks_found;
+    drags += o.drags;
+    drags_found += o.drags_found;
+    pushes_pressed += o.pushes_pressed;
+    presses += o.presses;
+    matched += o.matched;
+    motion_seconds += o.motion_seconds;
+    false_clicks += o.false_clicks;
+    latencies.insert(latencies.end(), o.latencies.begin(), o.latencies.end());
+    offsets.insert(offsets.end(), o.offsets.begin(), o.offsets.end());
+}
+
+double Tally::press_recall() const {
+    return gestures() == 0 ? std::nan("") : double(pushes_pressed) / gestures();
+}
+
+double Tally::precision() const {
+    return presses == 0 ? std::nan("") : double(matched) / presses;
+}
+
+double Tally::false_per_minute() const {
+    return motion_seconds <= 0 ? std::nan("") : false_clicks / (motion_seconds / 60.0);
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return std::nan("");
+    const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), middle, values.end());
+    if (values.size() % 2 == 1) return *middle;
+    const double upper = *middle;
+    return (upper + *std::max_element(values.begin(), middle)) / 2;
+}
+
+TrackedClip track_rendered_truth(const scene::GestureClip& clip) {
+    TrackedClip tracked;
+    tracked.name = clip.spec.name;
+    tracked.motion = clip.motion;
+    tracked.conditions = clip.conditions;
+    tracked.clicks = sorted(clip.clicks);
+    if (clip.motion_to > clip.motion_from)
+        tracked.motion_spans.emplace_back(clip.motion_from, clip.motion_to);
+    tracked.aspect = double(clip.spec.width) / clip.spec.height;
+    tracked.seconds = std::round(clip.spec.seconds * clip.spec.fps) / clip.spec.fps;
+    return tracked;
+}
+
+TrackedClip track_rendered(const scene::GestureClip& clip, const core::Settings& settings) {
+    TrackedClip tracked = track_rendered_truth(clip);
+    const scene::Renderer renderer(clip.spec);
+    core::Tracker tracker(settings);
+    tracked.results.reserve(static_cast<std::size_t>(renderer.frame_count()));
+    for (int i = 0; i < renderer.frame_count(); ++i) {
+        const scene::RenderedFrame frame = renderer.render(i);
+        tracked.results.push_back(
+            tracker.process(view_of(frame.bgr, core::seconds_to_us(renderer.frame_time(i)))));
+    }
+    return tracked;
+}
+
+TrackedClip track_recorded(const std::string& video, const std::string& truth,
+                           const core::Settings& settings) {
+    TrackedClip tracked;
+    tracked.name = video;
+    tracked.motion = "recorded";
+    tracked.conditions = {{"clip", "recorded"}};
+    std::ifstream in(truth);
+    if (!in) throw InputError(truth + ": cannot open the click truth file");
+    std::string line;
+    int number = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        const auto hash = line.find('#');
+        if (hash != std::string::npos) line.erase(hash);
+        std::istringstream words(line);
+        std::string kind;
+        if (!(words >> kind)) continue;
+        if (kind == "motion") {
+            double from = 0;
+            double to = 0;
+            if (!(words >> from >> to) || to <= from) {
+                throw InputError(truth + ":" + std::to_string(number) +
+                                 ": motion: expected FROM TO in seconds, FROM < TO");
+            }
+            tracked.motion_spans.emplace_back(from, to);
+            continue;
+        }
+        scene::IntendedClick click;
+        if (kind == "click") {
+            click.kind = scene::GestureKind::click;
+        } else if (kind == "drag") {
+            click.kind = scene::GestureKind::drag;
+        } else {
+            throw InputError(truth + ":" + std::to_string(number) + ": " + kind +
+                             ": unknown line (allowed: click, drag, motion)");
+        }
+        if (!(words >> click.start >> click.press >> click.release) ||
+            !(click.start <= click.press && click.press <= click.release)) {
+            throw InputError(truth + ":" + std::to_string(number) +
+                             ": expected START PRESS RELEASE in seconds, in that order");
+        }
+        words >> click.depth >> click.seconds;  // optional
+        tracked.clicks.push_back(click);
+    }
+    tracked.clicks = sorted(tracked.clicks);
+    VideoSource source(video, 0.0);
+    core::Tracker tracker(settings);
+    while (const auto frame = source.next()) {
+        tracked.aspect = double(frame->bgr.cols) / frame->bgr.rows;
+        tracked.results.push_back(tracker.process(view_of(frame->bgr, frame->timestamp)));
+        tracked.seconds = static_cast<double>(frame->timestamp) / 1e6;
+    }
+    if (tracked.results.empty()) throw InputError(video + ": no frame");
+    return tracked;
+}
+
+void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, Tallies& tallies,
+                std::FILE* misses) {
+    core::PointerController pointer(settings, clip.aspect);
+    std::vector<Press> presses;
+    std::vector<double> times;
+    std::vector<cv::Point2d> cursors;  // after each frame's command
+    std::vector<double> rises;         // the click machine's, for --misses
+    std::vector<core::ClickState> states;
+    cv::Point2d cursor;
+    const double abs_scale = screen_px / std::max(1, settings.motion.absolute_max);
+    for (const core::FrameResult& result : clip.results) {
+        const core::PointerCommand command = pointer.update(result);
+        const double t = static_cast<double>(result.timestamp) / 1e6;
+        if (command.has_absolute) {
+            cursor = cv::Point2d(command.abs_x * abs_scale, command.abs_y * abs_scale);
+        } else {
+            cursor += cv::Point2d(command.dx, command.dy);
+        }
+        for (const core::ButtonChange& change : command.button_changes()) {
+            if (change.button != core::Button::left) continue;
+            if (change.pressed) {
+                presses.push_back(Press{t, std::nullopt, false, cursor});
+            } else if (!presses.empty() && !presses.back().released) {
+                presses.back().released = t;
+            }
+        }
+        if (pointer.click_machine().state() == core::ClickState::dragging && !presses.empty())
+            presses.back().dragged = true;
+        times.push_back(t);
+        cursors.push_back(cursor);
+        rises.push_back(pointer.click_machine().rise());
+        states.push_back(pointer.click_machine().state());
+    }
+    auto cursor_before = [&](double t) {
+        const auto after = std::lower_bound(times.begin(), times.end(), t);
+        if (after == times.begin()) return cv::Point2d();
+        return cursors[static_cast<std::size_t>(after - times.begin()) - 1];
+    };
+
+    std::vector<std::string> common = {"all"};
+    for (const auto& [key, value] : clip.conditions)
+        common.push_back(key + "=" + value);
+    common.push_back("motion=" + clip.motion);
+    auto each = [&](const std::vector<std::string>& groups, auto&& change) {
+        for (const std::string& group : groups)
+            change(tallies[group]);
+    };
+
+    std::vector<bool> used(presses.size(), false);
+    for (const scene::IntendedClick& click : clip.clicks) {
+        std::vector<std::string> groups = common;
+        if (click.seconds > 0) {
+            groups.push_back("depth " + bin(click.depth, {0.08, 0.15, 0.25, 0.4}, ""));
+            groups.push_back("push " + bin(click.seconds, {0.15, 0.3, 0.6, 0.8}, " s"));
+            if (click.depth >= target_depth && click.seconds <= target_seconds)
+                groups.push_back("target");
+        }
+        const bool drag = click.kind == scene::GestureKind::drag;
+        std::optional<std::size_t> found;
+        for (std::size_t i = 0; i < presses.size() && !found; ++i) {
+            if (!used[i] && presses[i].at >= click.start &&
+                presses[i].at <= click.release + match_slack)
+                found = i;
+        }
+        if (found) used[*found] = true;
+        if (!found && misses != nullptr) {
+            // Why: how much of the push was tracked, and how far the rise got.
+            int frames = 0;
+            int tracked_frames = 0;
+            double peak = 0;
+            std::string seen;
+            for (std::size_t i = 0; i < times.size(); ++i) {
+                if (times[i] < click.start || times[i] > click.release) continue;
+                ++frames;
+                tracked_frames += clip.results[i].area ? 1 : 0;
+                peak = std::max(peak, rises[i]);
+                const std::string name(core::to_string(states[i]));
+                if (seen.find(name) == std::string::npos) seen += (seen.empty() ? "" : ",") + name;
+            }
+            std::fprintf(misses,
+                         "missed %s %s at %.2f s: depth %.2f in %.2f s; %d/%d frames with a "
+                         "target, peak rise %.3f, states %s\n",
+                         clip.name.c_str(), std::string(scene::to_string(click.kind)).c_str(),
+                         click.start, click.depth, click.seconds, tracked_frames, frames, peak,
+                         seen.c_str());
+        }
+        each(groups, [&](Tally& tally) {
+            (drag ? tally.drags : tally.clicks) += 1;
+            if (!found) return;
+            const Press& press = presses[*found];
+            tally.pushes_pressed += 1;
+            if (drag && press.dragged) tally.drags_found += 1;
+            if (!drag && !press.dragged && press.released) tally.clicks_found += 1;
+            tally.latencies.push_back(press.at - click.start);
+            tally.offsets.push_back(cv::norm(press.cursor - cursor_before(click.start)));
+        });
+    }
+    for (std::size_t i = 0; i < presses.size(); ++i) {
+        const bool in_motion =
+            std::any_of(clip.motion_spans.begin(), clip.motion_spans.end(), [&](const auto& span) {
+                return presses[i].at >= span.first && presses[i].at <= span.second;
+            });
+        if (misses != nullptr && (in_motion || !used[i])) {
+            std::fprintf(misses, "%s press %s at %.2f s\n", in_motion ? "false" : "unmatched",
+                         clip.name.c_str(), presses[i].at);
+        }
+        each(common, [&](Tally& tally) {
+            if (in_motion) {
+                tally.false_clicks += 1;
+            } else {
+                tally.presses += 1;
+                tally.matched += used[i] ? 1 : 0;
+            }
+        });
+    }
+    double motion_seconds = 0;
+    for (const auto& span : clip.motion_spans)
+        motion_seconds += std::min(span.second, clip.seconds) - span.first;
+    each(common, [&](Tally& tally) { tally.motion_seconds += std::max(0.0, motion_seconds); });
+}
+
+}  // namespace raypoint::daemon

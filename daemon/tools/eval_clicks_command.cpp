@@ -1,0 +1,310 @@
+// SPDX-License-Identifier: MIT
+#include "eval_clicks_command.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <opencv2/core.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "click_eval.hpp"
+#include "click_report.hpp"
+#include "input_error.hpp"
+#include "raypoint/cli/settings_options.hpp"
+#include "raypoint/cli/usage_error.hpp"
+#include "raypoint/scene/renderer.hpp"
+
+namespace raypoint::daemon {
+namespace {
+
+struct EvalOptions {
+    std::string set = "full";
+    std::uint32_t seed = 1;
+    int jobs = 1;
+    bool sweep = false;
+    std::string plot;       // PNG of the sweep
+    std::string write_dir;  // the rendered set as videos with their truth files
+    // The tracker's results of each rendered clip, kept in DIR/NAME.results and read back while
+    // the file exists (remove them after changing tracking settings or the tracker): a sweep
+    // of the click settings on the same tracking, in seconds.
+    std::string cache_dir;
+    bool misses = false;             // --misses: why each miss and false press happened, on stderr
+    std::vector<std::string> clips;  // recorded: VIDEO, truth in VIDEO.clicks
+    // --require: limits on the overall figures (the target pushes' recall); exit 1 when missed.
+    std::optional<double> min_recall;      // fraction
+    std::optional<double> max_false;       // per minute
+    std::optional<double> max_latency_ms;  // median
+    std::optional<double> max_offset_px;   // median
+};
+
+double parse_real(std::string_view option, std::string_view text) {
+    const std::string value(text);
+    char* end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    if (end == value.c_str() || *end != '\0' || !(v >= 0)) {
+        throw UsageError(std::string(option) + " " + value + ": not a number >= 0");
+    }
+    return v;
+}
+
+long parse_integer(std::string_view option, std::string_view text, long low, long high) {
+    const std::string value(text);
+    char* end = nullptr;
+    const long n = std::strtol(value.c_str(), &end, 10);
+    if (end == value.c_str() || *end != '\0' || n < low || n > high) {
+        throw UsageError(std::string(option) + " " + value + ": not a whole number (allowed: " +
+                         std::to_string(low) + ".." + std::to_string(high) + ")");
+    }
+    return n;
+}
+
+EvalOptions parse_eval_options(std::span<const std::string_view> args) {
+    EvalOptions options;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string_view arg = args[i];
+        if (arg == "--set-name") {
+            options.set = std::string(option_value(args, i));
+            if (options.set != "full" && options.set != "ci" && options.set != "none") {
+                throw UsageError("--set-name " + options.set + ": unknown (allowed: full|ci|none)");
+            }
+        } else if (arg == "--seed") {
+            options.seed = static_cast<std::uint32_t>(
+                parse_integer(arg, option_value(args, i), 0, 0x7fffffff));
+        } else if (arg == "--jobs") {
+            options.jobs = static_cast<int>(parse_integer(arg, option_value(args, i), 1, 64));
+        } else if (arg == "--sweep") {
+            options.sweep = true;
+        } else if (arg == "--plot") {
+            options.plot = std::string(option_value(args, i));
+            options.sweep = true;
+        } else if (arg == "--min-recall") {
+            options.min_recall = parse_real(arg, option_value(args, i));
+        } else if (arg == "--max-false-per-minute") {
+            options.max_false = parse_real(arg, option_value(args, i));
+        } else if (arg == "--max-latency-ms") {
+            options.max_latency_ms = parse_real(arg, option_value(args, i));
+        } else if (arg == "--max-offset-px") {
+            options.max_offset_px = parse_real(arg, option_value(args, i));
+        } else if (arg == "--misses") {
+            options.misses = true;
+        } else if (arg == "--cache") {
+            options.cache_dir = std::string(option_value(args, i));
+        } else if (arg == "--write") {
+            options.write_dir = std::string(option_value(args, i));
+        } else if (arg.starts_with("-") && arg.size() > 1) {
+            throw UsageError(std::string(arg) + ": unknown option (see raypoint --help)");
+        } else {
+            options.clips.emplace_back(arg);
+        }
+    }
+    return options;
+}
+
+void progress(int done, int total) {
+    if (isatty(STDERR_FILENO) == 0) return;
+    std::fprintf(stderr, "\r\033[Keval-clicks: tracked %d of %d clips", done, total);
+    std::fflush(stderr);
+}
+
+// What the pointer reads of a frame's result, in the host's byte order.
+struct CachedResult {
+    core::Timestamp timestamp;
+    std::int32_t state;
+    std::int32_t has_position;
+    double x, y;
+    double area;  // < 0: none
+};
+
+TrackedClip cached_track(const scene::GestureClip& clip, const core::Settings& settings,
+                         const std::string& dir) {
+    if (dir.empty()) return track_rendered(clip, settings);
+    const std::string path = dir + "/" + clip.spec.name + ".results";
+    std::ifstream in(path, std::ios::binary);
+    if (in) {
+        TrackedClip tracked = track_rendered_truth(clip);
+        CachedResult c{};
+        while (in.read(reinterpret_cast<char*>(&c), sizeof c)) {
+            core::FrameResult r;
+            r.timestamp = c.timestamp;
+            r.state = static_cast<core::TrackerState>(c.state);
+            r.has_position = c.has_position != 0;
+            r.position = cv::Point3d(c.x, c.y, 0);
+            if (c.area >= 0) r.area = c.area;
+            tracked.results.push_back(r);
+        }
+        return tracked;
+    }
+    TrackedClip tracked = track_rendered(clip, settings);
+    std::filesystem::create_directories(dir);
+    std::ofstream out(path, std::ios::binary);
+    for (const core::FrameResult& r : tracked.results) {
+        const CachedResult c{r.timestamp,
+                             static_cast<std::int32_t>(r.state),
+                             r.has_position ? 1 : 0,
+                             r.position.x,
+                             r.position.y,
+                             r.area.value_or(-1.0)};
+        out.write(reinterpret_cast<const char*>(&c), sizeof c);
+    }
+    if (!out) throw InputError(path + ": cannot write the cache");
+    return tracked;
+}
+
+// Every clip through the tracker, `jobs` at a time (each clip has its own tracker).
+std::vector<TrackedClip> track_all(const std::vector<scene::GestureClip>& set,
+                                   const EvalOptions& options, const core::Settings& settings) {
+    const int total = static_cast<int>(set.size() + options.clips.size());
+    std::vector<TrackedClip> tracked(static_cast<std::size_t>(total));
+    std::atomic<int> next{0};
+    std::atomic<int> done{0};
+    std::mutex failure_lock;
+    std::string failure;
+    auto work = [&] {
+        for (int i = next++; i < total; i = next++) {
+            const auto index = static_cast<std::size_t>(i);
+            try {
+                if (index < set.size()) {
+                    tracked[index] = cached_track(set[index], settings, options.cache_dir);
+                } else {
+                    const std::string& video = options.clips[index - set.size()];
+                    tracked[index] = track_recorded(video, video + ".clicks", settings);
+                }
+            } catch (const std::exception& e) {
+                const std::lock_guard lock(failure_lock);
+                failure = e.what();
+            }
+            progress(++done, total);
+        }
+    };
+    std::vector<std::thread> threads;
+    for (int j = 1; j < options.jobs; ++j)
+        threads.emplace_back(work);
+    work();
+    for (std::thread& thread : threads)
+        thread.join();
+    if (isatty(STDERR_FILENO) != 0) std::fputs("\r\033[K", stderr);
+    if (!failure.empty()) throw InputError(failure);
+    return tracked;
+}
+
+Tallies score_all(const std::vector<TrackedClip>& clips, const core::PointerSettings& settings,
+                  std::FILE* misses = nullptr) {
+    Tallies tallies;
+    for (const TrackedClip& clip : clips)
+        score_clip(clip, settings, tallies, misses);
+    return tallies;
+}
+
+// The sweep of docs/clicks.md: press_rise along each series; push_seconds and the time the rise
+// must be held (press_hold_seconds) across them.
+std::vector<SweepPoint> sweep(const std::vector<TrackedClip>& clips,
+                              const core::PointerSettings& base) {
+    std::vector<SweepPoint> points;
+    for (const double hold : {0.0, 0.05}) {
+        for (const double push : {0.25, 0.4, 0.6}) {
+            char series[64];
+            std::snprintf(series, sizeof series, "push %.2f s, hold %.2f s", push, hold);
+            for (const double rise : {0.10, 0.12, 0.14, 0.16, 0.18, 0.20, 0.25}) {
+                core::PointerSettings settings = base;
+                settings.click.press_rise = rise;
+                settings.click.release_rise = std::min(settings.click.release_rise, rise / 2);
+                settings.click.push_seconds = push;
+                settings.click.press_hold_seconds = hold;
+                const Tallies tallies = score_all(clips, settings);
+                char label[32];
+                std::snprintf(label, sizeof label, "%.2f", rise);
+                const Tally& target = tallies.contains("target") ? tallies.at("target") : Tally{};
+                const Tally& all = tallies.contains("all") ? tallies.at("all") : Tally{};
+                points.push_back({label, series, target.press_recall(), all.false_per_minute()});
+            }
+        }
+    }
+    return points;
+}
+
+// The --min/--max limits against the figures: a line on stderr for each missed, and whether all
+// were met.
+bool meets(const EvalOptions& options, const Tallies& tallies) {
+    const Tally none;
+    const Tally& target = tallies.contains("target") ? tallies.at("target") : none;
+    const Tally& all = tallies.contains("all") ? tallies.at("all") : none;
+    bool ok = true;
+    auto check = [&](const std::optional<double>& limit, double value, bool at_least,
+                     const char* what) {
+        if (!limit) return;
+        if (std::isnan(value) || (at_least ? value < *limit : value > *limit)) {
+            std::fprintf(stderr, "eval-clicks: %s %.3f, %s %.3f required\n", what, value,
+                         at_least ? "at least" : "at most", *limit);
+            ok = false;
+        }
+    };
+    check(options.min_recall, target.press_recall(), true, "target pushes pressed");
+    check(options.max_false, all.false_per_minute(), false, "false clicks a minute");
+    check(options.max_latency_ms, median(all.latencies) * 1000, false, "median latency (ms)");
+    check(options.max_offset_px, median(all.offsets), false, "median offset (px)");
+    return ok;
+}
+
+void write_set(const std::vector<scene::GestureClip>& set, const std::string& dir) {
+    std::filesystem::create_directories(dir);
+    for (const scene::GestureClip& clip : set) {
+        const scene::Renderer renderer(clip.spec);
+        const std::string video = dir + "/" + clip.spec.name + ".mp4";
+        cv::VideoWriter writer(video, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), clip.spec.fps,
+                               cv::Size(clip.spec.width, clip.spec.height));
+        if (!writer.isOpened())
+            throw InputError(video + ": cannot write (OpenCV VideoWriter, mp4v)");
+        for (int i = 0; i < renderer.frame_count(); ++i)
+            writer.write(renderer.render(i).bgr);
+        std::ofstream truth(video + ".clicks");
+        truth << scene::click_truth_text(clip);
+        if (!truth) throw InputError(video + ".clicks: cannot write");
+    }
+}
+
+}  // namespace
+
+int eval_clicks_command(std::span<const std::string_view> args) {
+    std::vector<std::string_view> rest;
+    const config::Config config = parse_settings_options(args, rest);
+    const EvalOptions options = parse_eval_options(rest);
+    for (const std::string& clip : options.clips) {
+        if (!std::filesystem::exists(clip + ".clicks"))
+            throw InputError(clip + ".clicks: no click truth beside the clip");
+    }
+    cv::setNumThreads(1);
+    const std::vector<scene::GestureClip> set = options.set == "none"
+                                                    ? std::vector<scene::GestureClip>{}
+                                                    : scene::gesture_set(options.set, options.seed);
+    if (!options.write_dir.empty()) {
+        write_set(set, options.write_dir);
+        return 0;
+    }
+    const std::vector<TrackedClip> tracked = track_all(set, options, config.core);
+    std::printf("# raypoint eval-clicks: gesture set '%s' (seed %u), %zu recorded clips\n\n",
+                options.set.c_str(), options.seed, options.clips.size());
+    const Tallies tallies =
+        score_all(tracked, config.core.pointer, options.misses ? stderr : nullptr);
+    print_tallies(stdout, tallies);
+    if (options.sweep) {
+        const std::vector<SweepPoint> points = sweep(tracked, config.core.pointer);
+        std::printf("\n");
+        print_sweep(stdout, points);
+        if (!options.plot.empty()) plot_sweep(options.plot, points);
+    }
+    std::fflush(stdout);
+    return meets(options, tallies) ? 0 : 1;
+}
+
+}  // namespace raypoint::daemon
