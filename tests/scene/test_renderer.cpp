@@ -151,6 +151,52 @@ TEST(SceneRenderer, BrightnessJumpsScaleTheMeanBrightness) {
     EXPECT_NEAR(mean_grey(r.render(29).bgr, all), before, 0.5) << "sudden, not gradual";
 }
 
+// Mains flicker through a rolling shutter: horizontal bands whose rows differ from frame to
+// frame by up to twice the depth, and that move between frames; none without flicker.
+TEST(SceneRenderer, FlickerRollsHorizontalBandsThroughAStillScene) {
+    SceneSpec s;
+    s.empty_seconds = 10;  // no target, just the board
+    s.seconds = 1;
+    s.noise_sigma = 0;
+    const auto row_ratio_spread = [](const SceneSpec& spec) {
+        const Renderer r(spec);
+        const cv::Mat a = r.render(10).bgr;
+        const cv::Mat b = r.render(11).bgr;
+        double lowest = 1e9;
+        double highest = 0;
+        for (int y = 0; y < spec.height; y += 8) {
+            const cv::Rect row(0, y, spec.width, 1);
+            const double ratio = mean_grey(a, row) / mean_grey(b, row);
+            lowest = std::min(lowest, ratio);
+            highest = std::max(highest, ratio);
+        }
+        return highest - lowest;
+    };
+    EXPECT_LT(row_ratio_spread(s), 0.01);
+    s.flicker_depth = 0.12;
+    EXPECT_GT(row_ratio_spread(s), 0.1);
+    EXPECT_LT(row_ratio_spread(s), 0.5);
+}
+
+// Exposure and white-balance drift: slow (two frames apart alike), but over a quarter period
+// the channels' balance moves.
+TEST(SceneRenderer, DriftChangesGainAndBalanceSlowly) {
+    SceneSpec s;
+    s.empty_seconds = 10;
+    s.seconds = 2;
+    s.noise_sigma = 0;
+    s.exposure_drift = 0.2;
+    s.white_balance_drift = 0.1;
+    s.drift_period = 4;
+    const Renderer r(s);
+    const auto blue_over_red = [&](int index) {
+        const cv::Scalar m = cv::mean(r.render(index).bgr);
+        return m[0] / m[2];
+    };
+    EXPECT_NEAR(blue_over_red(0), blue_over_red(1), 0.01);
+    EXPECT_GT(std::abs(blue_over_red(30) - blue_over_red(0)), 0.05);  // 1 s = a quarter period
+}
+
 TEST(SceneRenderer, FpsSetsFrameCountAndTimes) {
     SceneSpec s;
     s.seconds = 2;

@@ -92,7 +92,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Expectation{"realworld", 0.85, 4.0, std::nullopt},
                       Expectation{"fast", 0.90, 4.0, std::nullopt},   // 15 fps, strong blur
                       Expectation{"pause", 0.90, 4.0, std::nullopt},  // holds still 3.5 s
-                      Expectation{"push", 0.90, 4.0, std::nullopt}),
+                      Expectation{"push", 0.90, 4.0, std::nullopt},
+                      // Auto-exposure and white balance hunting (+-20% gain, +-10% a channel).
+                      Expectation{"drift", 0.98, 1.5, 0.9}),
     [](const ::testing::TestParamInfo<Expectation>& param) {
         return std::string(param.param.preset);
     });

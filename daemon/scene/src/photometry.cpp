@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "photometry.hpp"
 
+#include <cmath>
+
 #include "rng.hpp"
 
 namespace raypoint::scene {
@@ -33,6 +35,21 @@ double exposure_gain(const SceneSpec& spec, double t) {
         jumps += when <= t ? 1 : 0;
     const double level = jumps % 2 == 1 ? 1 / (1 + spec.brightness_jump) : 1.0;
     return spec.darkness * level;
+}
+
+cv::Vec3d drift_gains(const SceneSpec& spec, double t) {
+    const double phase = 2 * CV_PI * t / spec.drift_period;
+    const double exposure = 1 + spec.exposure_drift * std::sin(phase);
+    const double wb = spec.white_balance_drift;
+    return {exposure * (1 + wb * std::sin(phase + 1.3)),
+            exposure * (1 + 0.3 * wb * std::sin(phase)),
+            exposure * (1 - wb * std::sin(phase + 1.3))};
+}
+
+double flicker_gain(const SceneSpec& spec, double t, int y, int rows) {
+    if (spec.flicker_depth <= 0) return 1.0;
+    const double read_at = t + spec.readout_seconds * y / rows;
+    return 1 + spec.flicker_depth * std::sin(2 * CV_PI * spec.flicker_hz * read_at);
 }
 
 NoisePool::NoisePool(cv::Size size, double sigma, std::uint64_t seed) : size_(size), seed_(seed) {

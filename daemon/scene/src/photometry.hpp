@@ -19,6 +19,12 @@ cv::Mat make_vignette(cv::Size size);
 // which each brightness jump toggles between 1 and 1 / (1 + brightness_jump).
 double exposure_gain(const SceneSpec& spec, double t);
 
+// Per-channel (B, G, R) multipliers at time t from the slow exposure and white-balance drift.
+cv::Vec3d drift_gains(const SceneSpec& spec, double t);
+
+// Multiplier of row y (of `rows`) of the frame exposed at time t from mains flicker.
+double flicker_gain(const SceneSpec& spec, double t, int y, int rows);
+
 // Sensor noise for every frame cut from one pre-drawn field at per-frame offsets: drawing
 // 640x480x3 Gaussian numbers a frame would cost more than the rest of the rendering. Two
 // frames never share an offset with their neighbour, so frame differences stay pure noise.

@@ -159,12 +159,33 @@ SceneSpec make(std::string_view name, std::uint32_t seed) {
         return s;
     }
     if (name == "drag") return drag(name, seed);
+    if (name == "flicker") {
+        // A skin hand in a room lit by fluorescent tubes on 50 Hz mains, through a cheap webcam's
+        // MJPEG (quality 60): 12% bands rolling through every frame.
+        SceneSpec s = base(name, Target::hand, Background::cluttered, seed);
+        s.noise_sigma = 3;
+        s.blur = 0.5;
+        s.flicker_depth = 0.12;
+        s.jpeg_quality = 60;
+        return s;
+    }
+    if (name == "drift") {
+        // Auto-exposure and white balance hunting the whole clip (+-20% gain, +-10% per channel,
+        // a 3 s period), as a webcam does under mixed daylight and lamp light.
+        SceneSpec s = base(name, Target::hand, Background::cluttered, seed);
+        s.noise_sigma = 3;
+        s.blur = 0.5;
+        s.exposure_drift = 0.2;
+        s.white_balance_drift = 0.1;
+        s.drift_period = 3.0;
+        return s;
+    }
     return {};
 }
 
-constexpr std::array<std::string_view, 14> names{
-    "ideal", "lowlight", "interfering", "nonconvex", "realworld", "hd60",  "exposure",
-    "jpeg",  "fast",     "pause",       "push",      "rightdown", "click", "drag"};
+constexpr std::array<std::string_view, 16> names{
+    "ideal", "lowlight", "interfering", "nonconvex", "realworld", "hd60", "exposure", "jpeg",
+    "fast",  "pause",    "push",        "rightdown", "click",     "drag", "flicker",  "drift"};
 
 }  // namespace
 

@@ -73,6 +73,11 @@ void validate(const SceneSpec& s) {
     check(s.jpeg_quality >= 0 && s.jpeg_quality <= 100, "jpeg_quality must be 0..100");
     check(s.brightness_jump > -1, "brightness_jump must be > -1");
     check(s.darkness > 0, "darkness must be > 0");
+    check(s.flicker_depth >= 0 && s.flicker_depth < 1, "flicker_depth must be in [0, 1)");
+    check(s.flicker_hz > 0 && s.readout_seconds >= 0, "flicker_hz > 0 and readout_seconds >= 0");
+    check(s.exposure_drift >= 0 && s.exposure_drift < 1 && s.white_balance_drift >= 0 &&
+              s.white_balance_drift < 1 && s.drift_period > 0,
+          "drifts must be in [0, 1) and drift_period > 0");
     check(s.speed > 0, "speed must be > 0");
     check(s.target_size_m > 0, "target_size_m must be > 0");
     check(s.push_depth >= 0 && s.push_depth < 1, "push_depth must be in [0, 1)");
@@ -155,6 +160,22 @@ cv::Mat composite(const Renderer::Assets& a, cv::Rect roi, const SubFrames& subs
     return light;
 }
 
+// Flicker bands and exposure/white-balance drift on a band of rows starting at `top` (CV_32FC3).
+void apply_camera_light(const SceneSpec& spec, double t, int top, cv::Mat& light) {
+    if (spec.flicker_depth <= 0 && spec.exposure_drift <= 0 && spec.white_balance_drift <= 0) {
+        return;
+    }
+    const cv::Vec3d drift = drift_gains(spec, t);
+    for (int y = 0; y < light.rows; ++y) {
+        const cv::Vec3d row_gain = drift * flicker_gain(spec, t, top + y, spec.height);
+        auto* px = light.ptr<cv::Vec3f>(y);
+        for (int x = 0; x < light.cols; ++x) {
+            for (int c = 0; c < 3; ++c)
+                px[x][c] = static_cast<float>(px[x][c] * row_gain[c]);
+        }
+    }
+}
+
 // The sensor: exposure gain on the light plus noise, rounded and clipped to 8 bits, in bands
 // of rows so that no frame-sized float buffer is needed. target (over roi) may be empty.
 cv::Mat expose(const Renderer::Assets& a, const SceneSpec& spec, int index, const cv::Mat& target,
@@ -172,6 +193,7 @@ cv::Mat expose(const Renderer::Assets& a, const SceneSpec& spec, int index, cons
             target(overlap - roi.tl()).copyTo(part);
         }
         cv::Mat out = bgr(band);
+        apply_camera_light(spec, index / spec.fps, top, light);
         if (noise.empty()) {
             light.convertTo(out, CV_8UC3, gain);
         } else {

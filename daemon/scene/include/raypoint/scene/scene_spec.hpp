@@ -62,6 +62,19 @@ struct SceneSpec {
     // Each jump divides (1st, 3rd, ...) or multiplies (2nd, 4th, ...) the gain by
     // 1 + brightness_jump, so the gain alternates between 1 and 1 / (1 + brightness_jump).
     double brightness_jump = 0.25;
+    // Mains flicker under fluorescent or cheap LED light: the light swings by +-flicker_depth at
+    // flicker_hz (twice the mains frequency: 100 Hz in Europe, 120 in America), and the rolling
+    // shutter reads the rows top to bottom over readout_seconds, so the swing shows as
+    // horizontal bands that roll through the picture from frame to frame.
+    double flicker_depth = 0.0;
+    double flicker_hz = 100.0;
+    double readout_seconds = 0.025;
+    // Slow auto-exposure and white-balance hunting: the gain swings by +-exposure_drift and each
+    // channel's by +-white_balance_drift (blue and red in opposite phase, green between) over
+    // drift_period seconds.
+    double exposure_drift = 0.0;
+    double white_balance_drift = 0.0;
+    double drift_period = 4.0;
     double darkness = 1.0;  // light level multiplier (the lowlight preset: 0.42, noise 8)
     double speed = 1.0;     // scales the default trajectory's speed (not an explicit path's)
     // Empty: a default smooth trajectory that enters from the right edge at empty_seconds
