@@ -151,8 +151,11 @@ TrackedClip track_recorded(const std::string& video, const std::string& truth,
         } else if (kind == "drag") {
             click.kind = scene::GestureKind::drag;
         } else {
-            throw InputError(truth + ":" + std::to_string(number) + ": " + kind +
-                             ": unknown line (allowed: click, drag, motion)");
+            std::string message = truth;
+            message += ":" + std::to_string(number) + ": ";
+            message += kind;
+            message += ": unknown line (allowed: click, drag, motion)";
+            throw InputError(message);
         }
         if (!(words >> click.start >> click.press >> click.release) ||
             !(click.start <= click.press && click.press <= click.release)) {
@@ -215,7 +218,7 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, 
 
     std::vector<std::string> common = {"all"};
     for (const auto& [key, value] : clip.conditions)
-        common.push_back(key + "=" + value);
+        common.push_back(std::string(key).append("=").append(value));
     common.push_back("motion=" + clip.motion);
     auto each = [&](const std::vector<std::string>& groups, auto&& change) {
         for (const std::string& group : groups)

@@ -272,6 +272,8 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
     const std::vector<std::string> motions = {"lean",    "walk",       "swipe", "turn",
                                               "reenter", "brightness", "wander"};
     std::vector<GestureClip> clips;
+    clips.reserve(static_cast<std::size_t>(push_clips) +
+                  static_cast<std::size_t>(motion_rounds) * motions.size());
     for (int i = 0; i < push_clips; ++i)
         clips.push_back(push_clip(seed, i));
     int index = 0;
