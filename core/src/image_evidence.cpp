@@ -45,15 +45,31 @@ std::optional<cv::Point2f> ImageEvidence::detect() noexcept {
 Estimate ImageEvidence::estimate(cv::Point2f inner) noexcept {
     images_.ensure_edges();
     Estimate estimate = estimator_.estimate(images_.edges(), inner);
-    if (estimate.crosses_border) {
-        if (movement_near(estimate.end_centroid, motion_radius(estimate.end_area)) >=
-            settings_.extremity_motion * images_.movement()) {
-            estimate.centroid = estimate.end_centroid;
-            estimate.area = estimate.end_area;
-            estimate.inner = estimate.end_inner;
-        }
+    if (estimate.crosses_border && end_is_moving(estimate)) {
+        estimate.centroid = estimate.end_centroid;
+        estimate.area = estimate.end_area;
+        estimate.inner = estimate.end_inner;
     }
     return estimate;
+}
+
+// The end must hold a share of the scene's movement, and move at least as densely as the rest of
+// the region: a hand waves at the end of a sleeve that only follows it, while a still door a ball
+// touched on its way in is still near its far end even when the ball's movement is near enough
+// to count toward the share.
+bool ImageEvidence::end_is_moving(const Estimate& estimate) const noexcept {
+    const float end_radius = motion_radius(estimate.end_area);
+    const double end_movement = movement_near(estimate.end_centroid, end_radius);
+    if (end_movement < settings_.extremity_motion * images_.movement()) return false;
+    const double rest_area = estimate.area - estimate.end_area;
+    if (rest_area <= 0.0) return true;
+    const cv::Point2f rest_centroid =
+        (estimate.centroid * static_cast<float>(estimate.area) -
+         estimate.end_centroid * static_cast<float>(estimate.end_area)) *
+        static_cast<float>(1.0 / rest_area);
+    const float rest_radius = motion_radius(rest_area);
+    const double rest_movement = movement_near(rest_centroid, rest_radius);
+    return end_movement / (end_radius * end_radius) >= rest_movement / (rest_radius * rest_radius);
 }
 
 double ImageEvidence::movement_near(cv::Point2f centre, float radius) const noexcept {

@@ -28,6 +28,7 @@ class ImageEvidence final : public FrameEvidence {
     }
 
   private:
+    bool end_is_moving(const Estimate& estimate) const noexcept;
     cv::Vec3f patch_mean(const cv::Mat& color, cv::Point2f at) const noexcept;
 
     Preprocessor& images_;

@@ -11,6 +11,7 @@ Settings paper_settings() {
     settings.tracking.search_threshold = 57600.0;
     settings.tracking.min_area = 0.02;
     settings.estimator.area_mode = AreaMode::blocks;
+    settings.estimator.extremity = 0.0;
     settings.tracking.keep_still_target = false;
     settings.tracking.abandon_seconds = 0.0;
     settings.tracking.search_weighting = SearchWeighting::all;

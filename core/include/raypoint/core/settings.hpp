@@ -69,10 +69,10 @@ struct EstimatorSettings {
     // AreaMode::refined: a region with at least extremity_contact pixels on the image border is
     // an arm or a body coming in from outside the picture; its part beyond this share of the
     // farthest pixel's distance from the border crossing is its far end, the target when it
-    // moves (TrackingSettings::extremity_motion). 0 = the whole region, as in the paper, and the
-    // default: 0.5 takes the rendered hd60 hand from its sleeve (0% to 100% tracked) but moves
-    // a ball onto a door it leaked into in another clip (100% to 37%, docs/accuracy.md).
-    double extremity = 0.0;
+    // moves, and moves at least as densely as the rest (TrackingSettings::extremity_motion).
+    // 0 = the whole region, as in the paper. 0.5 takes a rendered hand off its sleeve (0% to
+    // 100% tracked) and loses no clip; 0.4 and 0.6 each lose one (docs/settings.md).
+    double extremity = 0.5;
     int extremity_contact = 16;
 };
 
