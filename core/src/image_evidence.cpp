@@ -41,11 +41,17 @@ std::optional<cv::Point2f> ImageEvidence::detect() noexcept {
 
 // The far end of a region crossing the border (EstimatorSettings::extremity) is the target when
 // the scene's movement is there (a hand waving at the end of its sleeve); a still end is
-// background the region leaked into (a door beside a ball), and the whole region stays.
+// background the region leaked into (a door beside a ball), and the whole region stays. Once the
+// end is the target it stays so while the region crosses the border: the hand pausing at the top
+// of a push must not turn back into hand and sleeve, an area jump the click machine would take
+// for a push.
 Estimate ImageEvidence::estimate(cv::Point2f inner) noexcept {
     images_.ensure_edges();
     Estimate estimate = estimator_.estimate(images_.edges(), inner);
-    if (estimate.crosses_border && end_is_moving(estimate)) {
+    if (!estimate.crosses_border) {
+        on_end_ = false;
+    } else if (on_end_ || end_is_moving(estimate)) {
+        on_end_ = true;
         estimate.centroid = estimate.end_centroid;
         estimate.area = estimate.end_area;
         estimate.inner = estimate.end_inner;
@@ -60,7 +66,8 @@ Estimate ImageEvidence::estimate(cv::Point2f inner) noexcept {
 bool ImageEvidence::end_is_moving(const Estimate& estimate) const noexcept {
     const float end_radius = motion_radius(estimate.end_area);
     const double end_movement = movement_near(estimate.end_centroid, end_radius);
-    if (end_movement < settings_.extremity_motion * images_.movement()) return false;
+    if (end_movement <= 0.0 || end_movement < settings_.extremity_motion * images_.movement())
+        return false;
     const double rest_area = estimate.area - estimate.end_area;
     if (rest_area <= 0.0) return true;
     const cv::Point2f rest_centroid =

@@ -27,6 +27,8 @@ class ImageEvidence final : public FrameEvidence {
         return patch_mean(images_.previous_color(), at);
     }
 
+    void forget_target() noexcept override { on_end_ = false; }
+
   private:
     bool end_is_moving(const Estimate& estimate) const noexcept;
     cv::Vec3f patch_mean(const cv::Mat& color, cv::Point2f at) const noexcept;
@@ -34,6 +36,7 @@ class ImageEvidence final : public FrameEvidence {
     Preprocessor& images_;
     Estimator& estimator_;
     const TrackingSettings& settings_;
+    bool on_end_ = false;  // the target is a border-crossing region's far end
 };
 
 }  // namespace raypoint::core::detail

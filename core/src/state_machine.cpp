@@ -113,6 +113,7 @@ bool StateMachine::on_searching() noexcept {
     result_.estimate = Estimate{*found, 0.0, *found, 0};
     result_.has_target = true;
     result_.acquired = true;
+    evidence_->forget_target();
     reference_color_ = evidence_->current_color(*found);
     still_since_.reset();
     state_ = TrackerState::tracking;
@@ -244,6 +245,7 @@ void StateMachine::drop_target(LossReason reason) noexcept {
     elsewhere_since_.reset();
     result_.has_target = false;
     result_.lost = true;
+    evidence_->forget_target();
 }
 
 void StateMachine::accept(const Estimate& estimate) noexcept {

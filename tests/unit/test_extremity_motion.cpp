@@ -74,5 +74,26 @@ TEST(ExtremityMotion, ABallComingInOverTheBorderKeepsTheStillDoorItLeakedInto) {
     EXPECT_NEAR(kept.area, whole.area, 1e-9);
 }
 
+TEST(ExtremityMotion, TheEndStaysTheTargetWhileTheHandPausesUntilTheTargetIsForgotten) {
+    // The hand moves, then holds still (the top of a push): the estimate stays on the hand
+    // instead of jumping back to hand and sleeve, an area change the click machine would read
+    // as depth. A new target starts from the whole region again.
+    const cv::Mat before = scene({280, 200, 80, 280}, {296, 180}, 56);
+    const cv::Mat after = scene({280, 200, 80, 280}, {320, 180}, 56);
+    const cv::Point2f hand(320.0F / scale, 180.0F / scale);
+    Settings settings;
+    Preprocessor images(settings.preprocess);
+    const std::unique_ptr<Estimator> estimator = make_estimator(settings.estimator);
+    detail::ImageEvidence evidence(images, *estimator, settings.tracking);
+    ASSERT_TRUE(images.process(test::bgr_view(before, 0), Preprocessor::Edges::computed));
+    ASSERT_TRUE(images.process(test::bgr_view(after, 33333), Preprocessor::Edges::computed));
+    EXPECT_LT(distance(evidence.estimate({80, 100}).centroid, hand), 10.0F);
+    ASSERT_TRUE(images.process(test::bgr_view(after, 66667), Preprocessor::Edges::computed));
+    ASSERT_EQ(images.movement(), 0.0);
+    EXPECT_LT(distance(evidence.estimate({80, 100}).centroid, hand), 10.0F);
+    evidence.forget_target();
+    EXPECT_GT(distance(evidence.estimate({80, 100}).centroid, hand), 18.0F);
+}
+
 }  // namespace
 }  // namespace raypoint::core

@@ -37,6 +37,8 @@ class FrameEvidence {
     // Mean BGR of the colour_patch square centred at `at`, in this frame or the previous one.
     virtual cv::Vec3f current_color(cv::Point2f at) const noexcept = 0;
     virtual cv::Vec3f previous_color(cv::Point2f at) const noexcept = 0;
+    // The target was dropped, or a new one picked: what estimate() kept about the old one goes.
+    virtual void forget_target() noexcept {}
 };
 
 // What one frame did to the state machine.
