@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "click_eval.hpp"
 
+#include "click_truth.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -221,57 +222,9 @@ TrackedClip track_recorded(const std::string& video, const std::string& truth,
     tracked.name = video;
     tracked.motion = "recorded";
     tracked.conditions = {{"clip", "recorded"}};
-    std::ifstream in(truth);
-    if (!in) throw InputError(truth + ": cannot open the click truth file");
-    std::string line;
-    int number = 0;
-    while (std::getline(in, line)) {
-        ++number;
-        const auto hash = line.find('#');
-        if (hash != std::string::npos) line.erase(hash);
-        std::istringstream words(line);
-        std::string kind;
-        if (!(words >> kind)) continue;
-        if (kind == "motion") {
-            double from = 0;
-            double to = 0;
-            if (!(words >> from >> to) || to <= from) {
-                throw InputError(truth + ":" + std::to_string(number) +
-                                 ": motion: expected FROM TO in seconds, FROM < TO");
-            }
-            tracked.motion_spans.emplace_back(from, to);
-            continue;
-        }
-        scene::IntendedClick click;
-        if (kind == "click") {
-            click.kind = scene::GestureKind::click;
-        } else if (kind == "drag") {
-            click.kind = scene::GestureKind::drag;
-        } else if (kind == "right") {
-            click.kind = scene::GestureKind::right;
-        } else if (kind == "double") {
-            click.kind = scene::GestureKind::double_click;
-        } else if (kind == "scroll_up") {
-            click.kind = scene::GestureKind::scroll_up;
-        } else if (kind == "scroll_down") {
-            click.kind = scene::GestureKind::scroll_down;
-        } else {
-            std::string message = truth;
-            message += ":" + std::to_string(number) + ": ";
-            message += kind;
-            message +=
-                ": unknown line (allowed: click, drag, right, double, scroll_up, scroll_down, "
-                "motion)";
-            throw InputError(message);
-        }
-        if (!(words >> click.start >> click.press >> click.release) ||
-            !(click.start <= click.press && click.press <= click.release)) {
-            throw InputError(truth + ":" + std::to_string(number) +
-                             ": expected START PRESS RELEASE in seconds, in that order");
-        }
-        words >> click.depth >> click.seconds;  // optional
-        tracked.clicks.push_back(click);
-    }
+    ClickTruth read = read_click_truth(truth);
+    tracked.clicks = std::move(read.clicks);
+    tracked.motion_spans = std::move(read.motion_spans);
     tracked.clicks = sorted(tracked.clicks);
     VideoSource source(video, 0.0);
     core::Tracker tracker(settings);
