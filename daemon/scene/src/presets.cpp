@@ -76,8 +76,8 @@ SceneSpec drag(std::string_view name, std::uint32_t seed) {
 
 // The optional click gestures (click.right_seconds, double_seconds, scroll_gain), as drag: the
 // paper hand still, 23% closer in 0.2 s. rightclick: in at 5.5 s, held still 1.4 s, pulled back
-// at 7.1 s. doubleclick: in at 5.5-5.65 s, back at 5.75-5.9 s and in again at 6.3-6.45 s (the
-// second push begins 0.4 s after the first is out), back at 6.55-6.7 s. scroll: in at 5.5 s, held
+// at 7.1 s. doubleclick: in at 6.0-6.25 s, back at 6.4-6.65 s and in again at 7.0-7.25 s (the
+// second push begins 0.35 s after the first is out), back at 7.4-7.65 s. scroll: in at 5.5 s, held
 // while moving up (0.6 -> 0.35 of the height, 5.8-7.3 s: moving at once, or holding still would
 // right-click), pulled back at 7.6 s. Pushes from 5.5 s leave a slow VM's daemon time to be
 // tracking for min_tracking_seconds.
@@ -100,16 +100,16 @@ SceneSpec button_gesture(std::string_view name, std::uint32_t seed) {
     if (name == "doubleclick") {
         return gesture(name, seed, 10,
                        {{2.5, 0.5, 0.5, far},
-                        {5.3, 0.5, 0.5, far},
-                        {5.5, 0.5, 0.5, far},
-                        {5.65, 0.5, 0.5, near},
-                        {5.75, 0.5, 0.5, near},
-                        {5.9, 0.5, 0.5, far},
-                        {6.3, 0.5, 0.5, far},
-                        {6.45, 0.5, 0.5, near},
-                        {6.55, 0.5, 0.5, near},
-                        {6.7, 0.5, 0.5, far},
-                        {6.9, 0.5, 0.5, far},
+                        {5.8, 0.5, 0.5, far},
+                        {6.0, 0.5, 0.5, far},
+                        {6.25, 0.5, 0.5, near},
+                        {6.4, 0.5, 0.5, near},
+                        {6.65, 0.5, 0.5, far},
+                        {7.0, 0.5, 0.5, far},
+                        {7.25, 0.5, 0.5, near},
+                        {7.4, 0.5, 0.5, near},
+                        {7.65, 0.5, 0.5, far},
+                        {7.85, 0.5, 0.5, far},
                         {10, 0.5, 0.5, far}});
     }
     return gesture(name, seed, 11,
