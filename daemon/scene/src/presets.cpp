@@ -76,11 +76,12 @@ SceneSpec drag(std::string_view name, std::uint32_t seed) {
 
 // The optional click gestures (click.right_seconds, double_seconds, scroll_gain), as drag: the
 // paper hand still, 23% closer in 0.2 s. rightclick: in at 5.5 s, held still 1.4 s, pulled back
-// at 7.1 s. doubleclick: in at 6.0-6.25 s, back at 6.4-6.65 s and in again at 7.0-7.25 s (the
-// second push begins 0.35 s after the first is out), back at 7.4-7.65 s. scroll: in at 5.5 s, held
-// while moving up (0.6 -> 0.35 of the height, 5.8-7.3 s: moving at once, or holding still would
-// right-click), pulled back at 7.6 s. Pushes from 5.5 s leave a slow VM's daemon time to be
-// tracking for min_tracking_seconds.
+// at 7.1 s. doubleclick: in at 6.0-6.25 s, back at 6.4-6.65 s and in again at 7.25-7.5 s (the
+// second push begins 0.6 s after the first is out: the release comes during the pull-back and
+// the refractory 0.3 s must be over, on a slow machine's sparse frames too), back at 7.65-7.9 s.
+// scroll: in at 5.5 s, held while moving up (0.6 -> 0.35 of the height, 5.8-7.3 s: moving at once,
+// or holding still would right-click), pulled back at 7.6 s. Pushes from 5.5 s leave a slow VM's
+// daemon time to be tracking for min_tracking_seconds.
 SceneSpec button_gesture(std::string_view name, std::uint32_t seed) {
     constexpr double far = 0.65;
     constexpr double near = 0.5;
@@ -105,11 +106,11 @@ SceneSpec button_gesture(std::string_view name, std::uint32_t seed) {
                         {6.25, 0.5, 0.5, near},
                         {6.4, 0.5, 0.5, near},
                         {6.65, 0.5, 0.5, far},
-                        {7.0, 0.5, 0.5, far},
-                        {7.25, 0.5, 0.5, near},
-                        {7.4, 0.5, 0.5, near},
-                        {7.65, 0.5, 0.5, far},
-                        {7.85, 0.5, 0.5, far},
+                        {7.25, 0.5, 0.5, far},
+                        {7.5, 0.5, 0.5, near},
+                        {7.65, 0.5, 0.5, near},
+                        {7.9, 0.5, 0.5, far},
+                        {8.1, 0.5, 0.5, far},
                         {10, 0.5, 0.5, far}});
     }
     return gesture(name, seed, 11,
