@@ -269,6 +269,27 @@ const std::vector<Key>& schema() {
             "click", "baseline_seconds", 0.0, 600.0,
             "time constant of the baseline that follows slow changes in distance",
             [](auto& c) -> auto& { return c.core.pointer.click.baseline_seconds; }),
+        real_key(
+            "click", "right_seconds", 0.0, 10.0,
+            "a push held still this many seconds presses the right button, pulling back "
+            "releases it (0 = off); with it on, a push's left press waits for the pull-back or "
+            "a move",
+            [](auto& c) -> auto& { return c.core.pointer.click.right_seconds; }),
+        real_key(
+            "click", "scroll_gain", 0.0, 1000.0,
+            "wheel detents a frame width of vertical motion while a push is held (0 = off): "
+            "a held push moving up or down scrolls, sideways it drags",
+            [](auto& c) -> auto& { return c.core.pointer.click.scroll_gain; }),
+        real_key(
+            "click", "double_seconds", 0.0, 10.0,
+            "a push beginning within this many seconds of a click's release double-clicks "
+            "(0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.double_seconds; }),
+        real_key(
+            "click", "hold_radius", 0.0, 1.0,
+            "frame widths a held push may move and still be still (right click); farther, it "
+            "drags or scrolls",
+            [](auto& c) -> auto& { return c.core.pointer.click.hold_radius; }),
         // [dwell] click.mode = dwell
         real_key(
             "dwell", "seconds", 0.0, 60.0, "the cursor held still this many seconds clicks",

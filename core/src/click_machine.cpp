@@ -22,6 +22,12 @@ std::string_view to_string(ClickState state) noexcept {
             return "dragging";
         case ClickState::refractory:
             return "refractory";
+        case ClickState::holding:
+            return "holding";
+        case ClickState::right_pressed:
+            return "right_pressed";
+        case ClickState::scrolling:
+            return "scrolling";
     }
     return "?";
 }
@@ -29,20 +35,26 @@ std::string_view to_string(ClickState state) noexcept {
 ClickMachine::ClickMachine(const ClickSettings& settings) noexcept : settings_(settings) {}
 
 bool ClickMachine::release_all() noexcept {
-    const bool down = state_ == ClickState::pressed || state_ == ClickState::dragging;
+    const bool down = state_ == ClickState::pressed || state_ == ClickState::dragging ||
+                      state_ == ClickState::right_pressed;
     state_ = ClickState::inactive;
     held_since_.reset();
+    clicked_at_.reset();
     return down;
 }
 
-ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale,
-                             bool ready) noexcept {
+ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, bool ready,
+                             cv::Point2d where) noexcept {
     now_ = timestamp;
+    where_ = where;
     result_ = ClickStep{};
     if (!scale || !(*scale > 0.0) || !ready) {
         // Whatever the state, the button comes up: nothing may stay pressed without a target
         // the user can see being tracked.
-        result_.release = release_all();
+        const bool right = state_ == ClickState::right_pressed;
+        const bool down = release_all();
+        result_.release = down && !right;
+        result_.right_release = down && right;
     }
     if (!scale || !(*scale > 0.0)) {
         baseline_ = 0.0;
@@ -76,6 +88,15 @@ ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale,
         case ClickState::refractory:
             on_refractory();
             break;
+        case ClickState::holding:
+            on_holding();
+            break;
+        case ClickState::right_pressed:
+            on_right_pressed();
+            break;
+        case ClickState::scrolling:
+            on_scrolling();
+            break;
     }
     last_frame_ = now_;
     result_.state = state_;
@@ -108,10 +129,50 @@ bool ClickMachine::held(bool condition) noexcept {
 }
 
 void ClickMachine::release() noexcept {
+    // Only a click (not a drag, not the second of a double) can be the first of a double.
+    if (state_ == ClickState::pressed || state_ == ClickState::holding) {
+        if (!result_.double_click && !doubled_) {
+            clicked_at_ = now_;
+        } else {
+            clicked_at_.reset();
+        }
+    } else {
+        clicked_at_.reset();
+    }
+    result_.release = state_ != ClickState::right_pressed && state_ != ClickState::scrolling;
+    result_.right_release = state_ == ClickState::right_pressed;
     state_ = ClickState::refractory;
     released_at_ = now_;
-    result_.release = true;
     held_since_.reset();
+}
+
+void ClickMachine::confirm() noexcept {
+    result_.undo = true;
+    result_.push_began = push_began_;
+    held_since_.reset();
+    peak_ = scale_;
+    pressed_at_ = now_;
+    if (settings_.right_seconds > 0.0 || settings_.scroll_gain > 0.0) {
+        // Which gesture it is shows only after the press: no button until then.
+        state_ = ClickState::holding;
+        held_at_ = where_;
+        still_at_ = where_;
+        still_scale_ = scale_;
+        still_since_ = now_;
+    } else {
+        state_ = ClickState::pressed;
+        press_left();
+    }
+}
+
+void ClickMachine::press_left() noexcept {
+    result_.press = true;
+    // From the last click's release to this push's beginning: the time the user paused,
+    // whatever each push's own duration.
+    result_.double_click =
+        settings_.double_seconds > 0.0 && clicked_at_ &&
+        static_cast<double>(push_began_ - *clicked_at_) / 1e6 <= settings_.double_seconds;
+    doubled_ = result_.double_click;
 }
 
 bool ClickMachine::pulled_back() noexcept {
@@ -149,12 +210,7 @@ void ClickMachine::on_rising() noexcept {
         held_since_.reset();
         follow_baseline();
     } else if (held(high)) {
-        state_ = ClickState::pressed;
-        pressed_at_ = now_;
-        result_.press = true;
-        result_.push_began = push_began_;
-        held_since_.reset();
-        peak_ = scale_;
+        confirm();
     } else if (!in_time && !high) {
         state_ = ClickState::drifting;
         follow_baseline();
@@ -184,6 +240,59 @@ void ClickMachine::on_refractory() noexcept {
         state_ = ClickState::idle;
     }
     follow_baseline();
+}
+
+void ClickMachine::on_holding() noexcept {
+    if (pulled_back()) {
+        press_left();  // a click: press and release in one command
+        release();
+        return;
+    }
+    const cv::Point2d moved = where_ - held_at_;
+    if (cv::norm(moved) > settings_.hold_radius) {
+        if (settings_.scroll_gain > 0.0 && std::abs(moved.y) > std::abs(moved.x)) {
+            state_ = ClickState::scrolling;
+            result_.scroll = -moved.y;  // y grows downward; up scrolls up
+            scroll_y_ = where_.y;
+        } else {
+            state_ = ClickState::dragging;
+            press_left();
+        }
+        return;
+    }
+    // Still: near where the stillness began, in place and in size (start_rise is the rise
+    // that tells a push from noise). Half the radius: a drag that starts slowly (and the
+    // smoothed position lags it) restarts the time before it leaves the radius and drags.
+    if (cv::norm(where_ - still_at_) > settings_.hold_radius / 2 ||
+        std::abs(scale_ / still_scale_ - 1.0) > settings_.start_rise) {
+        still_at_ = where_;
+        still_scale_ = scale_;
+        still_since_ = now_;
+    }
+    if (settings_.right_seconds > 0.0) {
+        if (seconds_since(still_since_) >= settings_.right_seconds) {
+            state_ = ClickState::right_pressed;
+            result_.right_press = true;
+            held_since_.reset();
+        }
+    } else if (seconds_since(pressed_at_) >= settings_.drag_seconds) {
+        // Scroll alone: holding still drags, as without it.
+        state_ = ClickState::dragging;
+        press_left();
+    }
+}
+
+void ClickMachine::on_right_pressed() noexcept {
+    if (pulled_back()) release();
+}
+
+void ClickMachine::on_scrolling() noexcept {
+    if (pulled_back()) {
+        release();
+        return;
+    }
+    result_.scroll = scroll_y_ - where_.y;
+    scroll_y_ = where_.y;
 }
 
 }  // namespace raypoint::core

@@ -43,6 +43,7 @@ PointerCommand PointerController::release_all() noexcept {
     tracking_since_.reset();
     undo_ = {};
     before_push_.reset();
+    wheel_remainder_ = 0.0;
     release_down(command);
     return command;
 }
@@ -66,8 +67,15 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
         case ClickMode::depth: {
             const std::optional<double> scale =
                 has_target ? std::optional<double>(std::sqrt(*frame.area)) : std::nullopt;
-            const ClickStep step = clicker_.step(now, scale, ready);
-            const bool hold = step.state == ClickState::pressed;
+            // Frame widths on both axes, as the hold radius is.
+            const cv::Point2d where(position.x, position.y / frame_aspect_);
+            const ClickStep step = clicker_.step(now, scale, ready, where);
+            // x and y stay where the push began while a button is down or may yet be, and on
+            // the frame a held push starts a drag, whose press goes where the push began.
+            const bool hold = step.press || step.state == ClickState::pressed ||
+                              step.state == ClickState::holding ||
+                              step.state == ClickState::right_pressed ||
+                              step.state == ClickState::scrolling;
             const Motion motion = mapper_.update(now, has_target, position, hold);
             depth_click(step, motion, command);
             break;
@@ -97,15 +105,30 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
         release_down(command);
         undo_ = {};
         before_push_.reset();
+        wheel_remainder_ = 0.0;
     }
     return command;
 }
 
+void PointerController::scroll(double up, PointerCommand& command) noexcept {
+    // REL_WHEEL_HI_RES counts 120ths of a detent; REL_WHEEL follows each time the sum crosses
+    // a whole detent, as a high-resolution mouse wheel reports.
+    // Rounded, the rest carried: the sum follows the hand to half a unit.
+    const double units = up * settings_.click.scroll_gain * 120.0 + wheel_remainder_;
+    const int hi_res = static_cast<int>(std::lround(units));
+    wheel_remainder_ = units - hi_res;
+    if (hi_res == 0) return;
+    const long long detents_before = wheel_hi_res_ / 120;
+    wheel_hi_res_ += hi_res;
+    command.wheel_hi_res += hi_res;
+    command.wheel += static_cast<int>(wheel_hi_res_ / 120 - detents_before);
+}
+
 void PointerController::depth_click(const ClickStep& step, const Motion& motion,
                                     PointerCommand& command) noexcept {
-    if (step.press) {
-        // The press frame's own motion is held; the motion since the push began is undone, so
-        // the button goes down where the cursor was when the push started.
+    if (step.undo) {
+        // The confirming frame's own motion is held; the motion since the push began is
+        // undone, so the button goes down where the cursor was when the push started.
         command.dx = -undo_.x;
         command.dy = -undo_.y;
         if (before_push_) {
@@ -114,18 +137,27 @@ void PointerController::depth_click(const ClickStep& step, const Motion& motion,
             command.abs_y = before_push_->y;
         }
         undo_ = {};
-        change(command, Button::left, true);
-        return;
-    }
-    put_motion(command, motion);
-    if (step.state == ClickState::rising) {
-        undo_ += cv::Point(motion.dx, motion.dy);
     } else {
-        // Only idle leads to rising, so the last frame outside it is the one the push began at.
-        undo_ = {};
-        if (motion.has_absolute) before_push_ = cv::Point(motion.abs_x, motion.abs_y);
+        put_motion(command, motion);
+        if (step.state == ClickState::rising) {
+            undo_ += cv::Point(motion.dx, motion.dy);
+        } else {
+            // Only idle leads to rising, so the last frame outside it is the one the push
+            // began at.
+            undo_ = {};
+            if (motion.has_absolute) before_push_ = cv::Point(motion.abs_x, motion.abs_y);
+        }
     }
+    if (step.double_click) {
+        change(command, Button::left, true);
+        change(command, Button::left, false);
+    }
+    if (step.press) change(command, Button::left, true);
     if (step.release) change(command, Button::left, false);
+    if (step.right_press) change(command, Button::right, true);
+    if (step.right_release) change(command, Button::right, false);
+    if (step.scroll != 0.0) scroll(step.scroll, command);
+    if (step.state != ClickState::scrolling) wheel_remainder_ = 0.0;
 }
 
 }  // namespace raypoint::core

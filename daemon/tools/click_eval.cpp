@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "click_eval.hpp"
 
+#include "click_truth.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -52,12 +53,109 @@ struct Press {
     double at = 0;
     std::optional<double> released;
     bool dragged = false;
-    cv::Point2d cursor;  // after the press's own motion (the undo)
+    cv::Point2d cursor;    // after the press's own motion (the undo)
+    bool doubled = false;  // came after a whole click in the same command: a double click
 };
+
+// What a clip's intended gesture got from the pointer, besides the left presses.
+struct Outputs {
+    std::vector<double> rights;                 // s: right presses
+    std::vector<std::pair<double, int>> wheel;  // s, hi-res units (1/120 detent)
+};
+
+bool any_in(const std::vector<double>& times, double from, double to) {
+    return std::any_of(times.begin(), times.end(), [&](double t) { return t >= from && t <= to; });
+}
+
+// The wheel's sum over [from, to] and when it first moved (or nothing).
+std::pair<int, std::optional<double>> wheel_in(const Outputs& out, double from, double to) {
+    int sum = 0;
+    std::optional<double> first;
+    for (const auto& [t, units] : out.wheel) {
+        if (t < from || t > to) continue;
+        sum += units;
+        if (!first) first = t;
+    }
+    return {sum, first};
+}
+
+struct GestureScore {
+    bool found = false;
+    bool as_left = false;
+    std::optional<double> at;  // the gesture's press or first wheel step
+};
+
+// A right click, double click or scroll against what the pointer did in its span; the left
+// presses in the span are this gesture's (used), right or wrong.
+GestureScore score_gesture(const scene::IntendedClick& g, const std::vector<Press>& presses,
+                           std::vector<bool>& used, const Outputs& out) {
+    // `used` marks them so that no left click's precision counts them.
+    const double to = g.release + match_slack;
+    GestureScore score;
+    bool left = false;
+    for (std::size_t i = 0; i < presses.size(); ++i) {
+        if (used[i] || presses[i].at < g.start || presses[i].at > to) continue;
+        used[i] = true;
+        left = true;
+        if (g.kind == scene::GestureKind::double_click && presses[i].doubled && !score.found) {
+            score.found = true;
+            score.at = presses[i].at;
+        }
+    }
+    const bool right = any_in(out.rights, g.start, to);
+    const auto [wheel, first_wheel] = wheel_in(out, g.start, to);
+    switch (g.kind) {
+        case scene::GestureKind::right:
+            score.found = right;
+            for (double t : out.rights) {
+                if (t >= g.start && t <= to && !score.at) score.at = t;
+            }
+            break;
+        case scene::GestureKind::scroll_up:
+        case scene::GestureKind::scroll_down:
+            score.found = !left && !right &&
+                          (g.kind == scene::GestureKind::scroll_up ? wheel > 0 : wheel < 0);
+            score.at = first_wheel;
+            break;
+        case scene::GestureKind::double_click:
+        case scene::GestureKind::click:
+        case scene::GestureKind::drag:
+            break;
+    }
+    score.as_left = left && !score.found;
+    return score;
+}
+
+GestureTally& gesture_tally(Tally& tally, scene::GestureKind kind) {
+    switch (kind) {
+        case scene::GestureKind::right:
+            return tally.right;
+        case scene::GestureKind::double_click:
+            return tally.double_click;
+        case scene::GestureKind::scroll_up:
+        case scene::GestureKind::scroll_down:
+        case scene::GestureKind::click:
+        case scene::GestureKind::drag:
+            break;
+    }
+    return tally.scroll;
+}
 
 }  // namespace
 
+void GestureTally::add(const GestureTally& o) {
+    count += o.count;
+    found += o.found;
+    as_left += o.as_left;
+    latencies.insert(latencies.end(), o.latencies.begin(), o.latencies.end());
+}
+
 void Tally::add(const Tally& o) {
+    left_as_other += o.left_as_other;
+    false_wheel += o.false_wheel;
+    right.add(o.right);
+    double_click.add(o.double_click);
+    scroll.add(o.scroll);
     clicks += o.clicks;
     clicks_found += o.clicks_found;
     drags += o.drags;
@@ -124,47 +222,9 @@ TrackedClip track_recorded(const std::string& video, const std::string& truth,
     tracked.name = video;
     tracked.motion = "recorded";
     tracked.conditions = {{"clip", "recorded"}};
-    std::ifstream in(truth);
-    if (!in) throw InputError(truth + ": cannot open the click truth file");
-    std::string line;
-    int number = 0;
-    while (std::getline(in, line)) {
-        ++number;
-        const auto hash = line.find('#');
-        if (hash != std::string::npos) line.erase(hash);
-        std::istringstream words(line);
-        std::string kind;
-        if (!(words >> kind)) continue;
-        if (kind == "motion") {
-            double from = 0;
-            double to = 0;
-            if (!(words >> from >> to) || to <= from) {
-                throw InputError(truth + ":" + std::to_string(number) +
-                                 ": motion: expected FROM TO in seconds, FROM < TO");
-            }
-            tracked.motion_spans.emplace_back(from, to);
-            continue;
-        }
-        scene::IntendedClick click;
-        if (kind == "click") {
-            click.kind = scene::GestureKind::click;
-        } else if (kind == "drag") {
-            click.kind = scene::GestureKind::drag;
-        } else {
-            std::string message = truth;
-            message += ":" + std::to_string(number) + ": ";
-            message += kind;
-            message += ": unknown line (allowed: click, drag, motion)";
-            throw InputError(message);
-        }
-        if (!(words >> click.start >> click.press >> click.release) ||
-            !(click.start <= click.press && click.press <= click.release)) {
-            throw InputError(truth + ":" + std::to_string(number) +
-                             ": expected START PRESS RELEASE in seconds, in that order");
-        }
-        words >> click.depth >> click.seconds;  // optional
-        tracked.clicks.push_back(click);
-    }
+    ClickTruth read = read_click_truth(truth);
+    tracked.clicks = std::move(read.clicks);
+    tracked.motion_spans = std::move(read.motion_spans);
     tracked.clicks = sorted(tracked.clicks);
     VideoSource source(video, 0.0);
     core::Tracker tracker(settings);
@@ -181,6 +241,7 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, 
                 std::FILE* misses) {
     core::PointerController pointer(settings, clip.aspect);
     std::vector<Press> presses;
+    Outputs outputs;
     std::vector<double> times;
     std::vector<cv::Point2d> cursors;  // after each frame's command
     std::vector<double> rises;         // the click machine's, for --misses
@@ -195,14 +256,24 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, 
         } else {
             cursor += cv::Point2d(command.dx, command.dy);
         }
+        int left_presses = 0;
         for (const core::ButtonChange& change : command.button_changes()) {
+            if (change.button == core::Button::right) {
+                if (change.pressed) outputs.rights.push_back(t);
+                continue;
+            }
             if (change.button != core::Button::left) continue;
-            if (change.pressed) {
+            if (change.pressed && ++left_presses == 2) {
+                // The second press of one command: the first was a whole click before it.
+                presses.back().doubled = true;
+                presses.back().released.reset();
+            } else if (change.pressed) {
                 presses.push_back(Press{t, std::nullopt, false, cursor});
             } else if (!presses.empty() && !presses.back().released) {
                 presses.back().released = t;
             }
         }
+        if (command.wheel_hi_res != 0) outputs.wheel.emplace_back(t, command.wheel_hi_res);
         if (pointer.click_machine().state() == core::ClickState::dragging && !presses.empty())
             presses.back().dragged = true;
         times.push_back(t);
@@ -225,8 +296,46 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, 
             change(tallies[group]);
     };
 
+    // For --misses: how much of a gesture was tracked, how far the rise got, the states seen.
+    auto why = [&](const scene::IntendedClick& click) {
+        int frames = 0;
+        int tracked_frames = 0;
+        double peak = 0;
+        std::string seen;
+        for (std::size_t i = 0; i < times.size(); ++i) {
+            if (times[i] < click.start || times[i] > click.release) continue;
+            ++frames;
+            tracked_frames += clip.results[i].area ? 1 : 0;
+            peak = std::max(peak, rises[i]);
+            const std::string name(core::to_string(states[i]));
+            if (seen.find(name) == std::string::npos) seen += (seen.empty() ? "" : ",") + name;
+        }
+        char text[160];
+        std::snprintf(text, sizeof text, "%d/%d frames with a target, peak rise %.3f, states ",
+                      tracked_frames, frames, peak);
+        return text + seen;
+    };
     std::vector<bool> used(presses.size(), false);
+    std::vector<bool> by_gesture(presses.size(), false);  // a right, double or scroll's span
     for (const scene::IntendedClick& click : clip.clicks) {
+        if (click.kind != scene::GestureKind::click && click.kind != scene::GestureKind::drag) {
+            const GestureScore score = score_gesture(click, presses, by_gesture, outputs);
+            for (std::size_t i = 0; i < presses.size(); ++i)
+                used[i] = used[i] || by_gesture[i];
+            if (!score.found && misses != nullptr) {
+                std::fprintf(misses, "missed %s %s at %.2f s:%s %s\n", clip.name.c_str(),
+                             std::string(scene::to_string(click.kind)).c_str(), click.start,
+                             score.as_left ? " a left click;" : "", why(click).c_str());
+            }
+            each(common, [&](Tally& tally) {
+                GestureTally& g = gesture_tally(tally, click.kind);
+                g.count += 1;
+                g.found += score.found ? 1 : 0;
+                g.as_left += score.as_left ? 1 : 0;
+                if (score.found && score.at) g.latencies.push_back(*score.at - click.start);
+            });
+            continue;
+        }
         std::vector<std::string> groups = common;
         if (click.seconds > 0) {
             groups.push_back("depth " + bin(click.depth, {0.08, 0.15, 0.25, 0.4}, ""));
@@ -242,34 +351,23 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, 
                 found = i;
         }
         if (found) used[*found] = true;
+        const double to = click.release + match_slack;
+        const bool other = (found && presses[*found].doubled) ||
+                           any_in(outputs.rights, click.start, to) ||
+                           wheel_in(outputs, click.start, to).first != 0;
         if (!found && misses != nullptr) {
-            // Why: how much of the push was tracked, and how far the rise got.
-            int frames = 0;
-            int tracked_frames = 0;
-            double peak = 0;
-            std::string seen;
-            for (std::size_t i = 0; i < times.size(); ++i) {
-                if (times[i] < click.start || times[i] > click.release) continue;
-                ++frames;
-                tracked_frames += clip.results[i].area ? 1 : 0;
-                peak = std::max(peak, rises[i]);
-                const std::string name(core::to_string(states[i]));
-                if (seen.find(name) == std::string::npos) seen += (seen.empty() ? "" : ",") + name;
-            }
-            std::fprintf(misses,
-                         "missed %s %s at %.2f s: depth %.2f in %.2f s; %d/%d frames with a "
-                         "target, peak rise %.3f, states %s\n",
+            std::fprintf(misses, "missed %s %s at %.2f s: depth %.2f in %.2f s; %s\n",
                          clip.name.c_str(), std::string(scene::to_string(click.kind)).c_str(),
-                         click.start, click.depth, click.seconds, tracked_frames, frames, peak,
-                         seen.c_str());
+                         click.start, click.depth, click.seconds, why(click).c_str());
         }
         each(groups, [&](Tally& tally) {
             (drag ? tally.drags : tally.clicks) += 1;
+            tally.left_as_other += other ? 1 : 0;
             if (!found) return;
             const Press& press = presses[*found];
             tally.pushes_pressed += 1;
             if (drag && press.dragged) tally.drags_found += 1;
-            if (!drag && !press.dragged && press.released) tally.clicks_found += 1;
+            if (!drag && !press.dragged && press.released && !other) tally.clicks_found += 1;
             tally.latencies.push_back(press.at - click.start);
             tally.offsets.push_back(cv::norm(press.cursor - cursor_before(click.start)));
         });
@@ -283,6 +381,7 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, 
             std::fprintf(misses, "%s press %s at %.2f s\n", in_motion ? "false" : "unmatched",
                          clip.name.c_str(), presses[i].at);
         }
+        if (by_gesture[i]) continue;  // scored with its gesture
         each(common, [&](Tally& tally) {
             if (in_motion) {
                 tally.false_clicks += 1;
@@ -293,8 +392,25 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, 
         });
     }
     double motion_seconds = 0;
-    for (const auto& span : clip.motion_spans)
+    int false_rights = 0;
+    int false_wheel = 0;
+    for (const auto& span : clip.motion_spans) {
         motion_seconds += std::min(span.second, clip.seconds) - span.first;
+        for (double t : outputs.rights) {
+            if (t >= span.first && t <= span.second) ++false_rights;
+        }
+        for (const auto& [t, units] : outputs.wheel) {
+            if (t >= span.first && t <= span.second) ++false_wheel;
+        }
+    }
+    if (misses != nullptr && false_rights + false_wheel > 0) {
+        std::fprintf(misses, "false %s: %d right presses, %d wheel steps\n", clip.name.c_str(),
+                     false_rights, false_wheel);
+    }
+    each(common, [&](Tally& tally) {
+        tally.false_clicks += false_rights;
+        tally.false_wheel += false_wheel;
+    });
     each(common, [&](Tally& tally) { tally.motion_seconds += std::max(0.0, motion_seconds); });
 }
 

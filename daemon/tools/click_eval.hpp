@@ -40,6 +40,17 @@ TrackedClip track_rendered(const scene::GestureClip& clip, const core::Settings&
 TrackedClip track_recorded(const std::string& video, const std::string& truth,
                            const core::Settings& settings);
 
+// A right click, double click or scroll: how many, how many recognised, and how many taken for
+// a left click (a left press in the gesture's span without the gesture).
+struct GestureTally {
+    int count = 0;
+    int found = 0;
+    int as_left = 0;
+    std::vector<double> latencies;  // s, push start -> the gesture's press or first wheel step
+
+    void add(const GestureTally& other);
+};
+
 // How the pointer did on a set of clips, for one group (a condition, or everything).
 struct Tally {
     int clicks = 0;        // intended
@@ -53,6 +64,13 @@ struct Tally {
     int false_clicks = 0;           // presses during non-push motion
     std::vector<double> latencies;  // s, push start -> press
     std::vector<double> offsets;    // device px, cursor at the press - cursor at push start
+    // Intended clicks and drags that came out as another gesture: a right press, a double
+    // click or the wheel in their span.
+    int left_as_other = 0;
+    int false_wheel = 0;  // wheel steps during non-push motion
+    GestureTally right;
+    GestureTally double_click;
+    GestureTally scroll;
 
     void add(const Tally& other);
     int gestures() const { return clicks + drags; }

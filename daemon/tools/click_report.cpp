@@ -60,6 +60,24 @@ void print_tallies(std::FILE* out, const Tallies& tallies) {
     }
 }
 
+void print_gestures(std::FILE* out, const Tallies& tallies) {
+    const Tally none;
+    const Tally& all = tallies.contains("all") ? tallies.at("all") : none;
+    std::fprintf(out,
+                 "| gesture | count | recognised | taken for a left click | median latency (ms) "
+                 "|\n|---|---|---|---|---|\n");
+    const std::pair<const char*, const GestureTally*> rows[] = {
+        {"right click", &all.right}, {"double click", &all.double_click}, {"scroll", &all.scroll}};
+    for (const auto& [name, g] : rows) {
+        std::fprintf(out, "| %s | %d | %s | %s | %s |\n", name, g->count,
+                     percent(g->found, g->count).c_str(), percent(g->as_left, g->count).c_str(),
+                     number(median(g->latencies) * 1000, "%.0f").c_str());
+    }
+    std::fprintf(out, "| left click or drag taken for another gesture | %d | - | %s | - |\n",
+                 all.gestures(), percent(all.left_as_other, all.gestures()).c_str());
+    std::fprintf(out, "| wheel steps in non-push motion | %d | - | - | - |\n", all.false_wheel);
+}
+
 void print_sweep(std::FILE* out, const std::vector<SweepPoint>& points) {
     std::fprintf(out,
                  "| series | setting | target pushes pressed | false clicks / min |\n"

@@ -14,6 +14,10 @@ namespace raypoint::daemon {
 // conditions, the motions and the bins).
 void print_tallies(std::FILE* out, const Tallies& tallies);
 
+// The right clicks, double clicks and scrolls of the "all" group: recognised, and taken for a
+// left click; and the left clicks and drags taken for one of them.
+void print_gestures(std::FILE* out, const Tallies& tallies);
+
 // One point of a sweep: a label and its figures.
 struct SweepPoint {
     std::string label;   // "press_rise 0.14"

@@ -46,6 +46,10 @@ struct EvalOptions {
     std::optional<double> max_false;       // per minute
     std::optional<double> max_latency_ms;  // median
     std::optional<double> max_offset_px;   // median
+    // Right click, double click and scroll, each (those the set has): recognised at least this
+    // fraction, and neither they nor the left clicks and drags taken for one another more.
+    std::optional<double> min_gesture_recall;
+    std::optional<double> max_confusion;
 };
 
 double parse_real(std::string_view option, std::string_view text) {
@@ -96,6 +100,10 @@ EvalOptions parse_eval_options(std::span<const std::string_view> args) {
             options.max_latency_ms = parse_real(arg, option_value(args, i));
         } else if (arg == "--max-offset-px") {
             options.max_offset_px = parse_real(arg, option_value(args, i));
+        } else if (arg == "--min-gesture-recall") {
+            options.min_gesture_recall = parse_real(arg, option_value(args, i));
+        } else if (arg == "--max-confusion") {
+            options.max_confusion = parse_real(arg, option_value(args, i));
         } else if (arg == "--misses") {
             options.misses = true;
         } else if (arg == "--cache") {
@@ -253,6 +261,20 @@ bool meets(const EvalOptions& options, const Tallies& tallies) {
     check(options.max_false, all.false_per_minute(), false, "false clicks a minute");
     check(options.max_latency_ms, median(all.latencies) * 1000, false, "median latency (ms)");
     check(options.max_offset_px, median(all.offsets), false, "median offset (px)");
+    const std::pair<const char*, const GestureTally*> gestures[] = {
+        {"right click", &all.right}, {"double click", &all.double_click}, {"scroll", &all.scroll}};
+    for (const auto& [name, g] : gestures) {
+        if (g->count == 0) continue;
+        const std::string what(name);
+        check(options.min_gesture_recall, double(g->found) / g->count, true,
+              (what + " recognised").c_str());
+        check(options.max_confusion, double(g->as_left) / g->count, false,
+              (what + " taken for a left click").c_str());
+    }
+    if (all.gestures() > 0) {
+        check(options.max_confusion, double(all.left_as_other) / all.gestures(), false,
+              "left clicks and drags taken for another gesture");
+    }
     return ok;
 }
 
@@ -297,6 +319,8 @@ int eval_clicks_command(std::span<const std::string_view> args) {
     const Tallies tallies =
         score_all(tracked, config.core.pointer, options.misses ? stderr : nullptr);
     print_tallies(stdout, tallies);
+    std::printf("\n");
+    print_gestures(stdout, tallies);
     if (options.sweep) {
         const std::vector<SweepPoint> points = sweep(tracked, config.core.pointer);
         std::printf("\n");

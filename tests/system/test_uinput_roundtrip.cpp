@@ -90,6 +90,9 @@ void check_device(libevdev* device, const DeviceProfile& profile) {
         if (!libevdev_has_event_code(device, EV_KEY, code)) throw Failure{"a button is missing"};
     }
     if (!libevdev_has_event_code(device, EV_REL, REL_WHEEL)) throw Failure{"REL_WHEEL is missing"};
+    if (!libevdev_has_event_code(device, EV_REL, REL_WHEEL_HI_RES)) {
+        throw Failure{"REL_WHEEL_HI_RES is missing"};
+    }
     switch (profile.mode) {
         case PointerMode::relative:
             if (!libevdev_has_event_code(device, EV_REL, REL_X) ||
@@ -163,6 +166,7 @@ std::vector<PointerCommand> commands(PointerMode mode) {
     second.add(Button::right, false);
     PointerCommand third;  // a wheel detent and a middle press left down for release_all
     third.wheel = -1;
+    third.wheel_hi_res = -120;
     third.add(Button::middle, true);
     return {first, second, third};
 }

@@ -6,6 +6,7 @@
 //   "abs 500 250"      absolute position, when there is one
 //   "+left" / "-left"  a button press / release, in order
 //   "wheel 1"          wheel detents, when not zero
+//   "hires 120"        REL_WHEEL_HI_RES (120ths of a detent), when not zero
 // joined by single spaces in that order; "" is no command at all. A row may also name the click
 // state after the frame ("idle", "pressed", ...; nullptr: not checked).
 
@@ -68,6 +69,7 @@ inline std::string format(const core::PointerCommand& command) {
         put((change.pressed ? "+" : "-") + std::string(core::to_string(change.button)));
     }
     if (command.wheel != 0) put("wheel " + std::to_string(command.wheel));
+    if (command.wheel_hi_res != 0) put("hires " + std::to_string(command.wheel_hi_res));
     return text;
 }
 

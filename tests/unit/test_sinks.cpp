@@ -234,6 +234,18 @@ TEST(PointerEncoder, WheelGoesWithTheMotion) {
     EXPECT_EQ(events(absolute_encoder.encode(scroll)), (Events{{EV_REL, REL_WHEEL, 1}, syn}));
 }
 
+TEST(PointerEncoder, HighResolutionWheelGoesInTheSameReport) {
+    PointerEncoder encoder(relative);
+    PointerCommand fine;  // a part of a detent: the hi-res axis alone
+    fine.wheel_hi_res = 60;
+    EXPECT_EQ(events(encoder.encode(fine)), (Events{{EV_REL, REL_WHEEL_HI_RES, 60}, syn}));
+    PointerCommand whole;  // crossing a detent: both
+    whole.wheel = -1;
+    whole.wheel_hi_res = -150;
+    EXPECT_EQ(events(encoder.encode(whole)),
+              (Events{{EV_REL, REL_WHEEL, -1}, {EV_REL, REL_WHEEL_HI_RES, -150}, syn}));
+}
+
 TEST(PointerEncoder, ReleaseAllReleasesWhatIsDown) {
     PointerEncoder encoder(relative);
     PointerCommand command;
@@ -254,6 +266,7 @@ TEST(PointerEncoder, FullestCommandFits) {
     encoder.release_failed(Button::middle);
     PointerCommand command = move(1, 1);
     command.wheel = 1;
+    command.wheel_hi_res = 120;
     for (int i = 0; i < PointerCommand::max_changes; ++i)
         command.add(Button::left, i % 2 == 0);
     EXPECT_EQ(encoder.encode(command).size(), EventBatch::capacity);
@@ -263,6 +276,8 @@ TEST(FileSink, FormatsOneEventALine) {
     std::array<char, 64> buffer{};
     EXPECT_EQ(format_event({EV_KEY, BTN_LEFT, 1}, 5033333, buffer), "5033333 EV_KEY BTN_LEFT 1");
     EXPECT_EQ(format_event(syn, 0, buffer), "0 EV_SYN SYN_REPORT 0");
+    EXPECT_EQ(format_event({EV_REL, REL_WHEEL_HI_RES, -60}, 9, buffer),
+              "9 EV_REL REL_WHEEL_HI_RES -60");
     EXPECT_EQ(format_event({EV_REL, REL_X, -12}, 7, std::span<char>(buffer.data(), 8)), "");
 }
 

@@ -88,6 +88,10 @@ constexpr std::array eval_clicks_options{
     OptionSpec{"--max-false-per-minute", "F", "exit 1 with more false clicks a minute"},
     OptionSpec{"--max-latency-ms", "F", "exit 1 with a longer median latency"},
     OptionSpec{"--max-offset-px", "F", "exit 1 with a larger median offset"},
+    OptionSpec{"--min-gesture-recall", "F",
+               "exit 1 when a right click, double click or scroll is recognised less"},
+    OptionSpec{"--max-confusion", "F",
+               "exit 1 when more of a gesture is taken for a left click, or the reverse"},
 };
 constexpr std::array print_config_options{
     OptionSpec{"--defaults", "", "read no configuration file"},

@@ -104,7 +104,10 @@ void PointerEncoder::encode_motion(const core::PointerCommand& command,
             }
             break;
     }
+    // libinput reads REL_WHEEL_HI_RES when the device has it and REL_WHEEL otherwise; both go
+    // out, in one report, as a high-resolution mouse sends them.
     if (command.wheel != 0) batch.push(EV_REL, REL_WHEEL, command.wheel);
+    if (command.wheel_hi_res != 0) batch.push(EV_REL, REL_WHEEL_HI_RES, command.wheel_hi_res);
     if (batch.size() != before) batch.push(EV_SYN, SYN_REPORT, 0);
 }
 

@@ -40,7 +40,8 @@ void enable_property(libevdev* device, unsigned int property) {
     }
 }
 
-// The template uinput copies. Both profiles have the three buttons and the wheel (QEMU's tablet
+// The template uinput copies. Both profiles have the three buttons and the wheel, in detents
+// and in 120ths (QEMU's tablet
 // has them too), so a click or scroll means the same in either mode.
 EvdevPtr make_template(const DeviceProfile& profile) {
     EvdevPtr device(libevdev_new());
@@ -50,6 +51,7 @@ EvdevPtr make_template(const DeviceProfile& profile) {
     for (unsigned int code : button_codes)
         enable(device.get(), EV_KEY, code);
     enable(device.get(), EV_REL, REL_WHEEL);
+    enable(device.get(), EV_REL, REL_WHEEL_HI_RES);
     switch (profile.mode) {
         case core::PointerMode::relative:
             enable(device.get(), EV_REL, REL_X);

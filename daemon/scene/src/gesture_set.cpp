@@ -8,19 +8,12 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "gesture_parts.hpp"
 #include "rng.hpp"
 
 namespace raypoint::scene {
-namespace {
 
-constexpr double sphere_size_m = 0.15;  // as the presets: a ball on a thread, an adult hand
-constexpr double hand_size_m = 0.19;
-constexpr double entry_seconds = 0.8;  // from outside the right edge to the path
-// Clicks are allowed 1 s (min_tracking_seconds) after the target is picked, just after it
-// starts entering; pushes and counted motion start after that and a moment to settle.
-constexpr double settle_seconds = 1.6;
-constexpr double key_step = 0.02;  // s between keyframes: fine enough for a 0.15 s swipe
-constexpr double pi = std::numbers::pi;
+namespace gesture {
 
 double smoothstep(double u) {
     u = std::clamp(u, 0.0, 1.0);
@@ -70,6 +63,17 @@ void sample_path(SceneSpec& s, const std::function<Keyframe(double)>& pose) {
         s.path.push_back(k);
     }
 }
+
+}  // namespace gesture
+
+namespace {
+
+using gesture::conditioned;
+using gesture::hand_size_m;
+using gesture::pi;
+using gesture::sample_path;
+using gesture::settle_seconds;
+using gesture::smoothstep;
 
 GestureClip push_clip(std::uint32_t seed, int index) {
     Rng rng(mix_seed(seed, 1000 + static_cast<std::uint64_t>(index)));
@@ -252,6 +256,14 @@ std::string_view to_string(GestureKind kind) {
             return "click";
         case GestureKind::drag:
             return "drag";
+        case GestureKind::right:
+            return "right";
+        case GestureKind::double_click:
+            return "double";
+        case GestureKind::scroll_up:
+            return "scroll_up";
+        case GestureKind::scroll_down:
+            return "scroll_down";
     }
     return "?";
 }
@@ -259,12 +271,15 @@ std::string_view to_string(GestureKind kind) {
 std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) {
     int push_clips = 0;
     int motion_rounds = 0;
+    int button_clips = 0;  // of each kind
     if (name == "full") {
         push_clips = 110;
         motion_rounds = 4;  // 7 motions x 4 + 2 more = 30 clips
+        button_clips = 20;
     } else if (name == "ci") {
         push_clips = 6;
         motion_rounds = 0;
+        button_clips = 2;
     } else {
         throw std::invalid_argument("gesture set '" + std::string(name) +
                                     "': unknown (allowed: full, ci)");
@@ -273,7 +288,8 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
                                               "reenter", "brightness", "wander"};
     std::vector<GestureClip> clips;
     clips.reserve(static_cast<std::size_t>(push_clips) +
-                  static_cast<std::size_t>(motion_rounds) * motions.size());
+                  static_cast<std::size_t>(motion_rounds) * motions.size() + 3 +
+                  3 * static_cast<std::size_t>(button_clips));
     for (int i = 0; i < push_clips; ++i)
         clips.push_back(push_clip(seed, i));
     int index = 0;
@@ -286,6 +302,12 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
                                                : std::vector<std::string>{"swipe", "lean"};
     for (const std::string& motion : extra)
         clips.push_back(motion_clip(seed, index++, motion, name == "ci" ? 16 : 26));
+    // Their own seeds, so adding them changed none of the clips above.
+    for (const GestureKind kind :
+         {GestureKind::right, GestureKind::double_click, GestureKind::scroll_up}) {
+        for (int i = 0; i < button_clips; ++i)
+            clips.push_back(gesture::button_clip(seed, i, kind));
+    }
     return clips;
 }
 

@@ -74,6 +74,58 @@ SceneSpec drag(std::string_view name, std::uint32_t seed) {
                     {9, 0.6, 0.5, far}});
 }
 
+// The optional click gestures (click.right_seconds, double_seconds, scroll_gain), as drag: the
+// paper hand still, 23% closer in 0.2 s. rightclick: in at 5.5 s, held still 1.4 s, pulled back
+// at 7.1 s. doubleclick: in at 6.0-6.25 s, back at 6.4-6.65 s and in again at 7.25-7.5 s (the
+// second push begins 0.6 s after the first is out: the release comes during the pull-back and
+// the refractory 0.3 s must be over, on a slow machine's sparse frames too), back at 7.65-7.9 s.
+// scroll: in at 5.5 s, held while moving up (0.6 -> 0.35 of the height, 5.8-7.3 s: moving at once,
+// or holding still would right-click), pulled back at 7.6 s. Pushes from 5.5 s leave a slow VM's
+// daemon time to be tracking for min_tracking_seconds.
+SceneSpec button_gesture(std::string_view name, std::uint32_t seed) {
+    constexpr double far = 0.65;
+    constexpr double near = 0.5;
+    if (name == "rightclick") {
+        return gesture(name, seed, 10.5,
+                       {{2.5, 0.5, 0.5, far},
+                        {5.3, 0.5, 0.5, far},
+                        {5.5, 0.5, 0.5, far},
+                        {5.7, 0.5, 0.5, near},
+                        {5.9, 0.5, 0.5, near},
+                        {6.9, 0.5, 0.5, near},
+                        {7.1, 0.5, 0.5, near},
+                        {7.3, 0.5, 0.5, far},
+                        {7.5, 0.5, 0.5, far},
+                        {10.5, 0.5, 0.5, far}});
+    }
+    if (name == "doubleclick") {
+        return gesture(name, seed, 10,
+                       {{2.5, 0.5, 0.5, far},
+                        {5.8, 0.5, 0.5, far},
+                        {6.0, 0.5, 0.5, far},
+                        {6.25, 0.5, 0.5, near},
+                        {6.4, 0.5, 0.5, near},
+                        {6.65, 0.5, 0.5, far},
+                        {7.25, 0.5, 0.5, far},
+                        {7.5, 0.5, 0.5, near},
+                        {7.65, 0.5, 0.5, near},
+                        {7.9, 0.5, 0.5, far},
+                        {8.1, 0.5, 0.5, far},
+                        {10, 0.5, 0.5, far}});
+    }
+    return gesture(name, seed, 11,
+                   {{2.5, 0.5, 0.6, far},
+                    {5.3, 0.5, 0.6, far},
+                    {5.5, 0.5, 0.6, far},
+                    {5.7, 0.5, 0.6, near},
+                    {5.8, 0.5, 0.6, near},
+                    {7.3, 0.5, 0.35, near},
+                    {7.6, 0.5, 0.35, near},
+                    {7.8, 0.5, 0.35, far},
+                    {8.0, 0.5, 0.35, far},
+                    {11, 0.5, 0.35, far}});
+}
+
 SceneSpec make(std::string_view name, std::uint32_t seed) {
     if (name == "ideal") return base(name, Target::sphere, Background::plain, seed);
     if (name == "lowlight") {
@@ -159,6 +211,8 @@ SceneSpec make(std::string_view name, std::uint32_t seed) {
         return s;
     }
     if (name == "drag") return drag(name, seed);
+    if (name == "rightclick" || name == "doubleclick" || name == "scroll")
+        return button_gesture(name, seed);
     if (name == "flicker") {
         // A skin hand in a room lit by fluorescent tubes on 50 Hz mains, through a cheap webcam's
         // MJPEG (quality 60): 12% bands rolling through every frame.
@@ -183,9 +237,10 @@ SceneSpec make(std::string_view name, std::uint32_t seed) {
     return {};
 }
 
-constexpr std::array<std::string_view, 16> names{
-    "ideal", "lowlight", "interfering", "nonconvex", "realworld", "hd60", "exposure", "jpeg",
-    "fast",  "pause",    "push",        "rightdown", "click",     "drag", "flicker",  "drift"};
+constexpr std::array<std::string_view, 19> names{
+    "ideal",   "lowlight", "interfering", "nonconvex",   "realworld", "hd60",  "exposure",
+    "jpeg",    "fast",     "pause",       "push",        "rightdown", "click", "drag",
+    "flicker", "drift",    "rightclick",  "doubleclick", "scroll"};
 
 }  // namespace
 

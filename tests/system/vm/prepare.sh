@@ -40,7 +40,7 @@ done
 mv "$vm_dir/initramfs.gz.new" "$vm_dir/initramfs.gz"
 
 # The clips: rendered once, converted to the raw frames raypoint-loopback-writer plays.
-for clip in rightdown click drag; do
+for clip in rightdown click drag rightclick doubleclick scroll; do
   out="$vm_dir/clips/$clip.yuyv"
   [ "$out" -nt "$render" ] && continue
   "$render" --preset "$clip" --out "$root/$clip" --no-masks >/dev/null

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 // Click by depth: pushing the target toward the camera presses the left button, pulling it back
-// releases it. A state machine, one handler a state; docs/pointer.md draws it and must change
-// with it. Input is the target's scale, sqrt(area): the raw estimate, not the smoothed z, whose
-// once-a-frame average peaks 0.2 s after a push does (docs/pointer.md). Frame time only.
+// releases it. Optionally ([click]): a push held still is a right click, two quick pushes a
+// double click, a push held while moving up or down scrolls. A state machine, one handler a state;
+// docs/pointer.md draws it and must change with it. Input is the target's scale, sqrt(area): the
+// raw estimate, not the smoothed z, whose once-a-frame average peaks 0.2 s after a push does
+// (docs/pointer.md). Frame time only.
 
 #include <optional>
 #include <string_view>
+
+#include <opencv2/core.hpp>
 
 #include "raypoint/core/frame.hpp"
 #include "raypoint/core/pointer_settings.hpp"
@@ -21,18 +25,31 @@ enum class ClickState {
     pressed,     // the button is down, x and y are frozen; the baseline is held
     dragging,    // held pushed past drag_seconds: the button stays down, x and y move
     refractory,  // just released: no press for refractory_seconds nor before the rise settles
+    // With right click or scroll on: pushed, no button yet; x and y frozen. Pulling back
+    // clicks, moving drags or scrolls, holding still right-clicks.
+    holding,
+    right_pressed,  // the right button is down, x and y frozen; pulling back releases it
+    scrolling,      // no button: vertical motion turns the wheel; pulling back stops
 };
 
 std::string_view to_string(ClickState state) noexcept;
 
 // What one frame did.
+// Button changes go out in the order of the fields: double_click's whole click, press, release,
+// right_press, right_release.
 struct ClickStep {
     ClickState state = ClickState::inactive;  // after the frame
+    bool double_click = false;                // with press: a whole left click before it
     bool press = false;                       // press the left button now
     bool release = false;                     // release it now
-    // With `press`: the last frame before the push began. Motion emitted after it is undone,
-    // so the click lands where the user aimed, not where the push carried the centroid.
+    bool right_press = false;
+    bool right_release = false;
+    // The push is confirmed now (PRESSED or HOLDING entered): motion emitted since the frame
+    // `push_began` is undone, so the click lands where the user aimed, not where the push
+    // carried the centroid.
+    bool undo = false;
     Timestamp push_began = 0;
+    double scroll = 0.0;  // SCROLLING: frame widths the target moved up this frame
 };
 
 class ClickMachine {
@@ -41,10 +58,12 @@ class ClickMachine {
 
     // scale: sqrt(area) of the tracked target, or nullopt when there is none (not TRACKING, or
     // the frame that picks a target). ready: tracked for min_tracking_seconds (PointerController
-    // decides). Losing the target while the button is down releases it.
-    ClickStep step(Timestamp timestamp, std::optional<double> scale, bool ready) noexcept;
+    // decides). Losing the target while the button is down releases it. where: the smoothed
+    // position in frame widths on both axes (y down), read by HOLDING and SCROLLING only.
+    ClickStep step(Timestamp timestamp, std::optional<double> scale, bool ready,
+                   cv::Point2d where = {}) noexcept;
 
-    // Pause, exit, signal: back to inactive. True when the button was down and must be released.
+    // Pause, exit, signal: back to inactive. True when a button was down and must be released.
     bool release_all() noexcept;
 
     ClickState state() const noexcept { return state_; }
@@ -59,6 +78,15 @@ class ClickMachine {
     void on_pressed() noexcept;
     void on_dragging() noexcept;
     void on_refractory() noexcept;
+    void on_holding() noexcept;
+    void on_right_pressed() noexcept;
+    void on_scrolling() noexcept;
+
+    void confirm() noexcept;  // RISING's push reached the press: PRESSED or HOLDING
+    void press_left() noexcept;
+    double creep_speed() const noexcept;
+    void creep(cv::Point2d& anchor,
+               double step) const noexcept;  // with double_click when it follows a click in time
 
     void follow_baseline() noexcept;
     double seconds_since(Timestamp then) const noexcept;
@@ -79,11 +107,22 @@ class ClickMachine {
     // DRAGGING) without a break; nothing while it is not.
     std::optional<Timestamp> held_since_;
     double peak_ = 0.0;  // the largest sqrt(area) since the press
+    // The last left click's release, for double_seconds; nothing after a double click.
+    std::optional<Timestamp> clicked_at_;
+    bool doubled_ = false;  // the button down now came with a double click
+    // HOLDING: where the hold began (x, y frame widths) and where and since when the target
+    // has been still (within hold_radius and start_rise of the still anchor).
+    cv::Point2d held_at_;
+    cv::Point2d still_at_;
+    double still_scale_ = 0.0;
+    Timestamp still_since_ = 0;
+    double scroll_y_ = 0.0;  // SCROLLING: y of the previous frame
 
     // The frame being stepped.
     Timestamp now_ = 0;
     double scale_ = 0.0;
     bool ready_ = false;
+    cv::Point2d where_;
     ClickStep result_;
 };
 

@@ -29,7 +29,8 @@ struct PointerCommand {
     int abs_y = 0;
     std::array<ButtonChange, max_changes> changes{};
     int change_count = 0;
-    int wheel = 0;  // detents; nothing produces it yet
+    int wheel = 0;         // REL_WHEEL detents, up positive (a push held moving up or down)
+    int wheel_hi_res = 0;  // REL_WHEEL_HI_RES: 120ths of a detent, the same motion finer
 
     // Returns false (and drops the change) when the command is full.
     bool add(Button button, bool pressed) noexcept;
@@ -37,7 +38,8 @@ struct PointerCommand {
         return {changes.data(), static_cast<std::size_t>(change_count)};
     }
     bool empty() const noexcept {
-        return dx == 0 && dy == 0 && !has_absolute && change_count == 0 && wheel == 0;
+        return dx == 0 && dy == 0 && !has_absolute && change_count == 0 && wheel == 0 &&
+               wheel_hi_res == 0;
     }
 };
 

@@ -39,6 +39,7 @@ class PointerController {
     void change(PointerCommand& command, Button button, bool pressed) noexcept;
     void release_down(PointerCommand& command) noexcept;
     void depth_click(const ClickStep& step, const Motion& motion, PointerCommand& command) noexcept;
+    void scroll(double up, PointerCommand& command) noexcept;  // up: frame widths
 
     PointerSettings settings_;
     double frame_aspect_;
@@ -51,6 +52,10 @@ class PointerController {
     cv::Point undo_;
     // Absolute: where the cursor was before the push began, restored by the press.
     std::optional<cv::Point> before_push_;
+    // The wheel: hi-res units (1/120 detent) not yet sent, and all sent, whose whole detents
+    // REL_WHEEL reports.
+    double wheel_remainder_ = 0.0;
+    long long wheel_hi_res_ = 0;
 };
 
 }  // namespace raypoint::core

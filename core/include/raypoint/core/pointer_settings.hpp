@@ -81,6 +81,23 @@ struct ClickSettings {
     // drifts closer or away, so a click works again 1.6 s after settling at a new distance.
     // It is held while a push may be under way, so it never swallows one.
     double baseline_seconds = 1.0;
+    // The optional gestures (docs/pointer.md). With right click or scroll on, a push presses no
+    // button until it is known which gesture it is: pulling back clicks (press and release
+    // together), moving past hold_radius drags (or scrolls), holding still right-clicks.
+    // A push held still (sqrt(area) within start_rise, position within hold_radius / 2) this
+    // long presses the right button; 0: off. A click holds 0-0.2 s; 0.6 s when on.
+    double right_seconds = 0.0;
+    // Wheel detents a frame width of vertical motion while a push is held; 0: off. A push held
+    // while moving up or down (more than sideways) scrolls; sideways, it drags.
+    double scroll_gain = 0.0;
+    // A push that begins within this long of the last click's release is a double click: its
+    // press comes after a whole click, so the desktop sees two within its double-click time
+    // (GNOME 0.4 s) however long the pushes take; 0: off.
+    double double_seconds = 0.0;
+    // Frame widths the target may move while held before it is a drag or a scroll (half of it
+    // and it is no longer still): as dwell.radius, over the smoothed position's jitter; the
+    // smoothed position lags a drag that starts slowly, and 0.04 let such drags right-click.
+    double hold_radius = 0.015;
 };
 
 // [dwell], click.mode = dwell.

@@ -170,3 +170,20 @@ button_times() {
 }
 # between A B LOW HIGH: LOW <= A... for clip times (decimals): A within [LOW, HIGH].
 within() { awk -v a="${1:-none}" -v l="$2" -v h="$3" 'BEGIN { exit !(a != "none" && a >= l && a <= h) }'; }
+
+# write_gesture_config FILE: write_config's relative pointer with right click, double click
+# and scroll on, at the values docs/clicks.md measures them with.
+write_gesture_config() {
+  write_config "$1" relative
+  cat >>"$1" <<INI
+
+[click]
+right_seconds = 0.6
+scroll_gain = 40
+double_seconds = 0.8
+INI
+}
+# key_times TRANSCRIPT CODE VALUE: clip times of CODE VALUE (BTN_RIGHT 1 ...), one a line.
+key_times() {
+  awk -v o="$origin" -v c="$2" -v v="$3" '$3 == c && $4 == v { printf "%.2f\n", $1 - o }' "$1"
+}

@@ -37,11 +37,12 @@ struct EvdevEvent {
 // The events of one command, in a fixed array so the per-frame path never allocates.
 class EventBatch {
   public:
-    // Motion (REL_X, REL_Y or ABS_X, ABS_Y, then REL_WHEEL) and its SYN_REPORT, then a key event
+    // Motion (REL_X, REL_Y or ABS_X, ABS_Y, then REL_WHEEL and REL_WHEEL_HI_RES) and its
+    // SYN_REPORT, then a key event
     // and a SYN_REPORT for each of the command's button changes and for each retried release
     // (PointerEncoder::release_failed) of a button the command leaves alone: with its changes all
     // on one button, two retries; with changes on more buttons, fewer.
-    static constexpr std::size_t capacity = 4 + 2 * (core::PointerCommand::max_changes + 2);
+    static constexpr std::size_t capacity = 5 + 2 * (core::PointerCommand::max_changes + 2);
 
     void push(std::uint16_t type, std::uint16_t code, std::int32_t value) noexcept;
     std::span<const EvdevEvent> events() const noexcept { return {events_.data(), size_}; }

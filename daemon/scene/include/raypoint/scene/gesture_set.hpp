@@ -20,6 +20,11 @@ namespace raypoint::scene {
 enum class GestureKind {
     click,  // push, pull back within a moment
     drag,   // push, hold while moving sideways, pull back
+    // The optional gestures (click.right_seconds, double_seconds, scroll_gain):
+    right,         // push, hold still, pull back
+    double_click,  // two quick pushes
+    scroll_up,     // push, move up while held, pull back
+    scroll_down,   // push, move down while held, pull back
 };
 
 std::string_view to_string(GestureKind kind);
@@ -27,8 +32,8 @@ std::string_view to_string(GestureKind kind);
 // One intended press and release. Times in seconds of the clip.
 struct IntendedClick {
     GestureKind kind = GestureKind::click;
-    double start = 0;    // the target starts coming closer
-    double press = 0;    // halfway in: where a press is meant
+    double start = 0;    // the target starts coming closer (a double click: the first push)
+    double press = 0;    // halfway in: where a press is meant (a double click: the second)
     double release = 0;  // halfway back out: where the release is meant
     double depth = 0;    // relative: 0.2 = the target came 20% closer (0 when unknown)
     double seconds = 0;  // the push's duration in (0 when unknown)
@@ -36,8 +41,8 @@ struct IntendedClick {
 
 struct GestureClip {
     SceneSpec spec;
-    // "push", or the motion that must never click: lean, walk, swipe, turn, reenter,
-    // brightness, wander.
+    // "push", "right", "double", "scroll", or the motion that must never click: lean, walk, swipe,
+    // turn, reenter, brightness, wander.
     std::string motion;
     // Conditions for the per-condition table, in this order: target, background, fps, camera.
     std::vector<std::pair<std::string, std::string>> conditions;
@@ -48,13 +53,16 @@ struct GestureClip {
     double motion_to = 0;
 };
 
-// "full": 110 push clips (330 pushes) and 30 motion clips (about 11 minutes of non-push motion);
-// "ci": a small fixed subset of the same kinds (6 push clips, 3 shorter motion clips).
+// "full": 110 push clips (330 pushes), 30 motion clips (about 11 minutes of non-push motion) and
+// 20 clips each of right clicks, double clicks and scrolls (60 gestures each);
+// "ci": a small fixed subset of the same kinds (6 push clips, 3 shorter motion clips, 2 clips
+// of each of the other gestures).
 // Throws std::invalid_argument for another name.
 std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed = 1);
 
-// The truth file beside a clip: one line a press, "click|drag START PRESS RELEASE [DEPTH
-// SECONDS]", and "motion FROM TO" for a span of non-push motion; '#' starts a comment.
+// The truth file beside a clip: one line a gesture,
+// "click|drag|right|double|scroll_up|scroll_down START PRESS RELEASE [DEPTH SECONDS]", and "motion
+// FROM TO" for a span of non-push motion; '#' starts a comment.
 std::string click_truth_text(const GestureClip& clip);
 
 }  // namespace raypoint::scene

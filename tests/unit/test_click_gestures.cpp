@@ -1,0 +1,299 @@
+// SPDX-License-Identifier: MIT
+// Right click, double click and scroll by depth as transcripts (test_pointer_transcript.hpp):
+// 10 fps rows of the tracker's result in, the click state and the device command out. The
+// size column is sqrt(area); a rise is size over the baseline, minus 1. Settings as
+// test_click_machine.cpp's (start 5%, press 20%, release 10%, push 0.35 s, refractory 0.3 s,
+// drag 0.8 s, no hold, clicks after 0.2 s, a constant baseline), and the gestures: right click
+// after 0.5 s still, 100 wheel detents a frame width, double click within 0.6 s, a hold radius
+// of 0.02 frame widths. x and y are fractions of the frame; 0.01 of x is 0.01 frame widths and
+// 10 px, 0.01 of y is 0.0075 frame widths (4:3).
+
+#include <gtest/gtest.h>
+
+#include "raypoint/core/pointer_controller.hpp"
+#include "test_pointer_transcript.hpp"
+
+namespace raypoint::core {
+namespace {
+
+using test::picked;
+using test::play;
+using test::S;
+using test::T;
+
+constexpr double aspect = 4.0 / 3.0;
+
+PointerSettings gestures() {
+    PointerSettings s = test::linear_pointer();
+    s.click.mode = ClickMode::depth;
+    s.click.start_rise = 0.05;
+    s.click.press_rise = 0.20;
+    s.click.release_rise = 0.10;
+    s.click.push_seconds = 0.35;
+    s.click.refractory_seconds = 0.3;
+    s.click.drag_seconds = 0.8;
+    s.click.baseline_seconds = 1000.0;
+    s.click.press_hold_seconds = 0.0;
+    s.click.release_drop = 0.0;
+    s.click.right_seconds = 0.5;
+    s.click.scroll_gain = 100.0;
+    s.click.double_seconds = 0.6;
+    s.click.hold_radius = 0.02;
+    s.safety.min_tracking_seconds = 0.2;
+    return s;
+}
+
+TEST(ClickGestures, APushHeldStillRightClicks) {
+    PointerController pointer(gestures(), aspect);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x      y      size    click            out
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.495, 0.500, 0.230,  "rising",        "rel 5 0"},
+        { 500,   T,       0.490, 0.500, 0.250,  "holding",       "rel -5 0"},  // undone, no button
+        { 600,   T,       0.490, 0.500, 0.255,  "holding",       ""},          // still since 500
+        { 900,   T,       0.492, 0.501, 0.252,  "holding",       ""},
+        {1000,   T,       0.491, 0.500, 0.250,  "right_pressed", "+right"},    // 0.5 s still
+        {1100,   T,       0.491, 0.500, 0.240,  "right_pressed", ""},          // frozen
+        {1200,   T,       0.491, 0.500, 0.215,  "refractory",    "-right"},    // pulled back
+        {1300,   T,       0.491, 0.500, 0.200,  "refractory",    ""},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, AQuickPushClicksWhenPulledBack) {
+    // With right click on, the left press waits for the gesture to show: pulled back, it is a
+    // click, press and release in one command where the push began.
+    PointerController pointer(gestures(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.230,  "rising",        ""},
+        { 500,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        { 600,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        { 700,   T,       0.500, 0.500, 0.215,  "refractory",    "+left -left"},
+        { 800,   T,       0.510, 0.500, 0.200,  "refractory",    "rel -10 0"},  // moves again
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, ASlowLeftClickIsNotARightClick) {
+    // Pressed 0.3 s in, still growing for 0.4 s, held 0.2 s, pulled back over 0.4 s: 1 s from
+    // the press to the release, but never still for 0.5 s (the size changes by more than
+    // start_rise within each 0.5 s): a left click.
+    PointerController pointer(gestures(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.215,  "rising",        ""},
+        { 500,   T,       0.500, 0.500, 0.230,  "rising",        ""},
+        { 600,   T,       0.500, 0.500, 0.245,  "holding",       ""},   // +22.5%, 0.3 s in
+        { 700,   T,       0.500, 0.500, 0.255,  "holding",       ""},
+        { 800,   T,       0.500, 0.500, 0.265,  "holding",       ""},   // +8% of 0.245: restarts
+        { 900,   T,       0.500, 0.500, 0.275,  "holding",       ""},
+        {1000,   T,       0.500, 0.500, 0.285,  "holding",       ""},   // +7.5% of 0.265
+        {1100,   T,       0.500, 0.500, 0.285,  "holding",       ""},
+        {1200,   T,       0.500, 0.500, 0.285,  "holding",       ""},
+        {1300,   T,       0.500, 0.500, 0.265,  "holding",       ""},   // -7%: restarts
+        {1400,   T,       0.500, 0.500, 0.245,  "holding",       ""},
+        {1500,   T,       0.500, 0.500, 0.225,  "holding",       ""},
+        {1600,   T,       0.500, 0.500, 0.215,  "refractory",    "+left -left"},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, AHeldPushMovingSidewaysDrags) {
+    // Moved 0.03 frame widths sideways: farther than the hold radius, more sideways than up, a
+    // drag. Its press goes down where the push began; the motion follows from the next frame.
+    PointerController pointer(gestures(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.250,  "holding",       ""},   // one frame is enough
+        { 500,   T,       0.490, 0.505, 0.250,  "holding",       ""},   // 0.011: within
+        { 600,   T,       0.470, 0.510, 0.250,  "dragging",      "+left"},
+        { 700,   T,       0.450, 0.510, 0.250,  "dragging",      "rel 20 0"},
+        { 800,   T,       0.440, 0.510, 0.210,  "refractory",    "rel 10 0 -left"},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, AHeldPushMovingUpScrollsUp) {
+    // 0.04 of y up is 0.03 frame widths: 3 detents (360 in 120ths) at 100 a frame width; x and
+    // y stay frozen, and pulling back ends it without a button.
+    PointerController pointer(gestures(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        { 500,   T,       0.500, 0.460, 0.250,  "scrolling",     "wheel 3 hires 360"},
+        { 600,   T,       0.502, 0.440, 0.250,  "scrolling",     "wheel 1 hires 180"},  // 4.5
+        { 700,   T,       0.502, 0.436, 0.250,  "scrolling",     "hires 36"},           // 4.8
+        { 800,   T,       0.502, 0.432, 0.250,  "scrolling",     "wheel 1 hires 36"},   // 5.1
+        { 900,   T,       0.502, 0.442, 0.250,  "scrolling",     "wheel -1 hires -90"},  // back
+        {1000,   T,       0.502, 0.442, 0.210,  "refractory",    ""},
+        {1100,   T,       0.512, 0.442, 0.200,  "refractory",    "rel -10 0"},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, WithoutScrollAHeldPushMovingDownDrags) {
+    // Without scroll_gain, moving a held push up or down drags.
+    PointerSettings s = gestures();
+    s.click.scroll_gain = 0.0;
+    PointerController pointer(s, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        { 500,   T,       0.500, 0.540, 0.250,  "dragging",      "+left"},
+        { 600,   T,       0.500, 0.560, 0.250,  "dragging",      "rel 0 15"},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, ScrollAloneStillDragsByHolding) {
+    // Scroll on, right click off: a push held still becomes a drag after drag_seconds, as
+    // without the gestures (the press where the push began, then free motion).
+    PointerSettings s = gestures();
+    s.click.right_seconds = 0.0;
+    PointerController pointer(s, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        {1100,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        {1200,   T,       0.500, 0.500, 0.250,  "dragging",      "+left"},  // 0.8 s
+        {1300,   T,       0.490, 0.500, 0.250,  "dragging",      "rel 10 0"},
+    });
+    // clang-format on
+}
+
+PointerSettings double_only() {
+    PointerSettings s = gestures();
+    s.click.right_seconds = 0.0;
+    s.click.scroll_gain = 0.0;
+    return s;
+}
+
+TEST(ClickGestures, TwoQuickPushesDoubleClick) {
+    // The second push begins 0.4 s after the first click's release: its press comes after a
+    // whole click, so the desktop sees two clicks within its double-click time.
+    PointerController pointer(double_only(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.250,  "pressed",       "+left"},
+        { 500,   T,       0.500, 0.500, 0.215,  "refractory",    "-left"},
+        { 600,   T,       0.500, 0.500, 0.200,  "refractory",    ""},
+        { 800,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 900,   T,       0.500, 0.500, 0.200,  "idle",          ""},   // the push began here
+        {1000,   T,       0.500, 0.500, 0.250,  "pressed",       "+left -left +left"},
+        {1100,   T,       0.500, 0.500, 0.215,  "refractory",    "-left"},
+        {1300,   T,       0.500, 0.500, 0.200,  "refractory",    ""},
+        {1400,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        {1500,   T,       0.500, 0.500, 0.250,  "pressed",       "+left"},  // a third: single
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, TwoPushesFurtherApartAreTwoClicks) {
+    PointerController pointer(double_only(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.250,  "pressed",       "+left"},
+        { 500,   T,       0.500, 0.500, 0.215,  "refractory",    "-left"},
+        { 800,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        {1200,   T,       0.500, 0.500, 0.200,  "idle",          ""},   // 0.7 s after
+        {1300,   T,       0.500, 0.500, 0.250,  "pressed",       "+left"},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, ADragIsNotTheFirstClickOfADouble) {
+    PointerController pointer(double_only(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.250,  "pressed",       "+left"},
+        {1200,   T,       0.500, 0.500, 0.250,  "dragging",      ""},
+        {1300,   T,       0.500, 0.500, 0.215,  "refractory",    "-left"},
+        {1600,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        {1700,   T,       0.500, 0.500, 0.250,  "pressed",       "+left"},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, DoubleClickWithRightClickOnComesAtTheSecondPullBack) {
+    PointerController pointer(gestures(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        { 500,   T,       0.500, 0.500, 0.215,  "refractory",    "+left -left"},
+        { 800,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 900,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        {1000,   T,       0.500, 0.500, 0.215,  "refractory",    "+left -left +left -left"},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, LosingTheTargetReleasesTheRightButton) {
+    PointerController pointer(gestures(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        { 900,   T,       0.500, 0.500, 0.250,  "right_pressed", "+right"},
+        {1000,   S,       0.0,   0.0,   0.0,    "inactive",      "-right"},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, AOneFrameGlitchWhileHeldNeitherScrollsNorClicks) {
+    // press_hold_seconds 0.05: one frame of a smaller area does not end the hold, so the
+    // right click still comes.
+    PointerSettings s = gestures();
+    s.click.press_hold_seconds = 0.05;
+    PointerController pointer(s, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.250,  "rising",        ""},
+        { 500,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        { 600,   T,       0.500, 0.500, 0.200,  "holding",       ""},   // one frame back
+        { 700,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        {1200,   T,       0.500, 0.500, 0.250,  "right_pressed", "+right"},  // 0.5 s since 700
+    });
+    // clang-format on
+}
+
+}  // namespace
+}  // namespace raypoint::core
