@@ -116,6 +116,8 @@ int FilterStage::filter_interior(int begin, const detail::FilterOutput& target) 
                                 begin,
                                 plan_.interior_end(),
                                 plan_.working().width,
+                                plan_.centre_step_bytes(),
+                                plan_.read_limit(),
                                 target};
     const bool bgr = plan_.format() == PixelFormat::bgr;
     switch (instructions_) {
