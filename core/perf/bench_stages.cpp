@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: MIT
 // Per-stage cost of preprocessing (paper 4.1): Poisson-disk filter + subsampling, Sobel edges,
 // difference + brightness compensation; every input size and format, and each instruction set
-// at 640x480. The stages after the filter work on the 160x120 working image only.
+// at 640x480. The stages after the filter work on the 160x120 working image only. The bounds
+// beside them: BM_FrameRead copies each frame of the same loop (what reading a frame costs at
+// the least), BM_FilterCached filters one frame again and again (the filter's arithmetic and
+// loads with the frame in cache).
 
 #include <benchmark/benchmark.h>
 
+#include <cstring>
 #include <string>
+#include <vector>
 
 #include "bench_frames.hpp"
 #include "raypoint/core/preprocess.hpp"
@@ -92,6 +97,32 @@ void BM_DifferenceCompensation(benchmark::State& state) {
     setup.label(state);
 }
 
+// The memory bound of the filter: every byte of each frame of the loop read once (memcpy into
+// one buffer that stays in cache).
+void BM_FrameRead(benchmark::State& state) {
+    Setup setup(state);
+    const core::FrameView first = setup.clip.view(0);
+    const auto bytes =
+        static_cast<std::size_t>(first.stride) * static_cast<std::size_t>(first.height);
+    std::vector<std::uint8_t> copy(bytes);
+    long index = 0;
+    for (auto _ : state) {
+        std::memcpy(copy.data(), setup.clip.view(index++).data, bytes);
+        benchmark::DoNotOptimize(copy.data());
+        benchmark::ClobberMemory();
+    }
+    setup.label(state);
+}
+
+// The filter's compute bound: the same frame each time, so it stays in cache.
+void BM_FilterCached(benchmark::State& state) {
+    Setup setup(state);
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(setup.preprocessor.filter(setup.clip.view(0)));
+    }
+    setup.label(state);
+}
+
 // All three, as the tracker runs them.
 void BM_Preprocess(benchmark::State& state) {
     Setup setup(state);
@@ -108,5 +139,7 @@ BENCHMARK(BM_FilterSubsample)->Apply(stage_arguments);
 BENCHMARK(BM_Sobel)->Apply(stage_arguments);
 BENCHMARK(BM_DifferenceCompensation)->Apply(stage_arguments);
 BENCHMARK(BM_Preprocess)->Apply(stage_arguments);
+BENCHMARK(BM_FrameRead)->Apply(stage_arguments);
+BENCHMARK(BM_FilterCached)->Apply(stage_arguments);
 
 }  // namespace raypoint::bench

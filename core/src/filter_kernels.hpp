@@ -4,6 +4,7 @@
 // arithmetic every path shares, so the scalar, SSE2 and AVX2 paths give identical images.
 
 #include <cstdint>
+#include <cstring>
 
 #include "raypoint/core/poisson_disk.hpp"
 
@@ -58,8 +59,27 @@ struct FilterRow {
     int begin;                // first working column to do
     int end;                  // one past the last interior column
     int width;                // working width: stores may spill into columns still to come
+    // Bytes between neighbouring interior centres when the step is the same everywhere (BGR
+    // 640 wide: 12; YUYV 640 wide: 8, 320 wide: 4), else 0.
+    int step_bytes;
+    // A read of n bytes at a tap's pointer + o stays inside every tap's input row when
+    // o + n <= read_limit: the row's bytes less the largest tap shift.
+    int read_limit;
     FilterOutput out;
 };
+
+// Unaligned 4- and 8-byte accesses without aliasing concerns (they compile to one move).
+inline int load32(const std::uint8_t* at) noexcept {
+    int value = 0;
+    std::memcpy(&value, at, 4);
+    return value;
+}
+inline void store32(std::uint8_t* at, int value) noexcept {
+    std::memcpy(at, &value, 4);
+}
+inline void store64(std::uint8_t* at, long long value) noexcept {
+    std::memcpy(at, &value, 8);
+}
 
 // Each returns the first working column it left undone (a multiple of its step from begin).
 int filter_bgr_sse2(const FilterRow& row) noexcept;

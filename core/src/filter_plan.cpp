@@ -85,6 +85,18 @@ void FilterPlan::build(int input_width, int input_height, PixelFormat format) {
     centre_bytes_.resize(static_cast<std::size_t>(width));
     for (int x = 0; x < width; ++x)
         centre_bytes_[x] = bgr ? centre_columns_[x] * 3 : (centre_columns_[x] & ~1) * 2;
+    centre_step_bytes_ = 0;
+    if (interior_end_ - interior_begin_ >= 2) {
+        centre_step_bytes_ = centre_bytes_[interior_begin_ + 1] - centre_bytes_[interior_begin_];
+        for (int x = interior_begin_ + 1; x < interior_end_; ++x) {
+            if (centre_bytes_[x] - centre_bytes_[x - 1] != centre_step_bytes_)
+                centre_step_bytes_ = 0;
+        }
+    }
+    int largest_shift = 0;
+    for (const FilterTap& tap : taps_)
+        largest_shift = std::max(largest_shift, tap.shift_bytes);
+    read_limit_ = input_width * (bgr ? 3 : 2) - largest_shift;
     input_width_ = input_width;
     input_height_ = input_height;
     format_ = format;

@@ -116,6 +116,8 @@ int FilterStage::filter_interior(int begin, const detail::FilterOutput& target) 
                                 begin,
                                 plan_.interior_end(),
                                 plan_.working().width,
+                                plan_.centre_step_bytes(),
+                                plan_.read_limit(),
                                 target};
     const bool bgr = plan_.format() == PixelFormat::bgr;
     switch (instructions_) {
@@ -144,11 +146,13 @@ void FilterStage::start_row(const FrameView& frame, int y) noexcept {
         tap_row_pointers_[t] =
             frame.data + static_cast<std::ptrdiff_t>(taps[t].rows[y]) * frame.stride;
     }
-    prefetch_rows(frame, y + 1);
+    if (y == 0) prefetch_rows(frame, 1);
+    prefetch_rows(frame, y + 2);
 }
 
 // A camera frame arrives cold in memory; the taps read 16 rows at a time, too many streams
-// for the hardware prefetcher, so the rows the next working row adds are fetched ahead.
+// for the hardware prefetcher, so the rows a later working row adds are fetched ahead: two
+// working rows ahead, as one row's filtering is shorter than a fetch from memory.
 void FilterStage::prefetch_rows(const FrameView& frame, int next_y) const noexcept {
 #if defined(__SSE2__)
     if (next_y >= plan_.working().height) return;

@@ -8,7 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <vector>
 
@@ -87,10 +92,8 @@ std::vector<InstructionSet> runnable_sets() {
     return sets;
 }
 
-void expect_matches_reference(cv::Size size, PixelFormat format) {
-    const int bytes_per_row = format == PixelFormat::bgr ? size.width * 3 : size.width * 2;
-    cv::Mat frame(size.height, bytes_per_row, CV_8U);
-    cv::randu(frame, 0, 256);
+// `frame`: size.height rows of the frame's bytes, any step.
+void expect_frame_matches_reference(const cv::Mat& frame, cv::Size size, PixelFormat format) {
     PreprocessSettings settings;
     const cv::Mat expected =
         reference(frame, format, size.width, cv::Size(settings.work_width, settings.work_height));
@@ -102,13 +105,28 @@ void expect_matches_reference(cv::Size size, PixelFormat format) {
                                                    static_cast<int>(frame.step), format, 0}));
         const std::string where = std::to_string(size.width) + "x" + std::to_string(size.height) +
                                   (format == PixelFormat::bgr ? " BGR " : " YUYV ") +
-                                  std::string(to_string(set));
+                                  std::string(to_string(set)) + " step " +
+                                  std::to_string(frame.step);
         cv::Mat difference;
         cv::absdiff(preprocessor.color(), expected, difference);
         EXPECT_EQ(cv::countNonZero(difference.reshape(1)), 0) << where;
         cv::absdiff(preprocessor.gray(), expected_grey, difference);
         EXPECT_EQ(cv::countNonZero(difference), 0) << where << " grey";
     }
+}
+
+int row_bytes(cv::Size size, PixelFormat format) {
+    return format == PixelFormat::bgr ? size.width * 3 : size.width * 2;
+}
+
+void expect_matches_reference(cv::Size size, PixelFormat format) {
+    cv::Mat frame(size.height, row_bytes(size, format), CV_8U);
+    cv::randu(frame, 0, 256);
+    expect_frame_matches_reference(frame, size, format);
+    // Rows further apart than their bytes (a padded buffer), by an odd count.
+    cv::Mat padded(size.height, row_bytes(size, format) + 13, CV_8U);
+    cv::randu(padded, 0, 256);
+    expect_frame_matches_reference(padded.colRange(0, row_bytes(size, format)), size, format);
 }
 
 // 640, 1280, 1920: integer scales (SIMD interior); 642 and 320: the clamped path.
@@ -123,6 +141,34 @@ TEST(FilterReference, YuyvMatchesExactly) {
     for (const cv::Size size : {cv::Size(640, 480), cv::Size(1280, 720), cv::Size(642, 482),
                                 cv::Size(320, 240), cv::Size(1920, 1080)}) {
         expect_matches_reference(size, PixelFormat::yuyv);
+    }
+}
+
+// The vector kernels load whole 8- and 16-byte groups around each tap: none may read before
+// the frame's first byte or past its last. Each frame here lies between inaccessible pages (a
+// read outside it ends the test with SIGSEGV), once against the page after and once against
+// the page before.
+TEST(FilterReference, ReadsNothingOutsideTheFrame) {
+    const auto page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+    for (const PixelFormat format : {PixelFormat::bgr, PixelFormat::yuyv}) {
+        for (const cv::Size size :
+             {cv::Size(640, 480), cv::Size(320, 240), cv::Size(1280, 720), cv::Size(642, 482)}) {
+            const std::size_t bytes =
+                static_cast<std::size_t>(row_bytes(size, format)) * size.height;
+            const std::size_t span = (bytes + page - 1) / page * page;
+            void* mapping =
+                mmap(nullptr, span + 2 * page, PROT_NONE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            ASSERT_NE(mapping, MAP_FAILED) << "mmap: " << std::strerror(errno);
+            auto* inside = static_cast<std::uint8_t*>(mapping) + page;
+            ASSERT_EQ(mprotect(inside, span, PROT_READ | PROT_WRITE), 0)
+                << "mprotect: " << std::strerror(errno);
+            for (std::uint8_t* start : {inside + span - bytes, inside}) {
+                cv::Mat frame(size.height, row_bytes(size, format), CV_8U, start);
+                cv::randu(frame, 0, 256);
+                expect_frame_matches_reference(frame, size, format);
+            }
+            munmap(mapping, span + 2 * page);
+        }
     }
 }
 

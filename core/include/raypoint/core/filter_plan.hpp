@@ -61,6 +61,12 @@ class FilterPlan {
     bool uniform_parity() const noexcept { return uniform_parity_; }
     // Bit t set where taps()[t].odd_luma: the kernels' per-tap test, one word for all taps.
     std::uint32_t odd_taps() const noexcept { return odd_taps_; }
+    // Bytes between neighbouring interior centres (or pairs) when the step is the same across
+    // the interior, else 0.
+    int centre_step_bytes() const noexcept { return centre_step_bytes_; }
+    // A read of n bytes at a tap's shifted row pointer + o stays inside every tap's input row
+    // when o + n <= read_limit(): the row's bytes less the largest tap shift.
+    int read_limit() const noexcept { return read_limit_; }
     // Per working row, the last (largest) input row a tap reads: the filter fetches the rows
     // of the next working row ahead up to it.
     int last_tap_row(int y) const noexcept { return last_tap_rows_[y]; }
@@ -78,6 +84,8 @@ class FilterPlan {
     int interior_begin_ = 0;
     int interior_end_ = 0;
     bool uniform_parity_ = false;
+    int centre_step_bytes_ = 0;
+    int read_limit_ = 0;
     std::uint32_t odd_taps_ = 0;
 };
 
