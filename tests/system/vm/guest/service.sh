@@ -23,6 +23,14 @@ scenario() {
     return
   fi
   echo "systemd: $(systemctl --version | head -1); package: $(basename "$service_deb")"
+  service_steps
+  step "done"
+  as_user systemctl --user status raypoint.service --no-pager >"$work/status-end.txt" 2>&1
+  # The guest's whole journal, for a failure's diagnosis (run_scenario.sh shows work/'s files).
+  journalctl --no-pager -o short-monotonic >"$work/journal.txt" 2>&1
+}
+
+service_steps() {
   step "install the package"
   install_package || return
   step "log in"
@@ -40,9 +48,6 @@ scenario() {
   service_security
   step "$replug_cycles replug cycles"
   replug "$replug_cycles"
-  step "done"
-  as_user systemctl --user status raypoint.service --no-pager >"$work/status-end.txt" 2>&1
-  journalctl --no-pager -o short-monotonic >"$work/journal.txt" 2>&1
 }
 
 # The package, as a user's machine gets it: dpkg -i, whose postinst loads uinput and has udev
