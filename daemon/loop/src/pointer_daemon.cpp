@@ -127,7 +127,10 @@ int PointerDaemon::run() {
         }
         Capture capture;
         if (const int fd = parts_.source->wait_fd(); fd >= 0) {
-            ready = wait_for_events(fd, std::min(now + idle_wake, stop_at_));
+            // Woken at the stall timeout itself, not up to idle_wake after it: the watchdog's
+            // budget below counts on the loss being declared on time.
+            const auto wake = std::min(now + idle_wake, last_frame_at_ + stall_timeout);
+            ready = wait_for_events(fd, std::min(wake, stop_at_));
             if ((ready & source_ready) != 0) capture = parts_.source->next(0);
         } else {
             // A source without a descriptor (a decoded video) waits inside next(); signals and
@@ -139,11 +142,17 @@ int PointerDaemon::run() {
             case CaptureStatus::frame:
                 on_frame(capture);
                 last_frame_at_ = Clock::now();
-                // Only frames feed the watchdog (and the lost camera's retries): a loop stuck in
-                // a driver call gets the service restarted.
+                // Only a turning loop feeds the watchdog (frames, a wait that timed out, the
+                // lost camera's retries): a loop stuck in a driver call gets the service
+                // restarted.
                 if (notifier_.watchdog_due(now)) notifier_.pet(now);
                 break;
             case CaptureStatus::timeout:
+                // The wait returned by itself, so the loop is not stuck: it is timing a stall.
+                // Without this pet, the last one (up to 2.5 s before the last frame) plus the
+                // 2 s stall exceeded WatchdogSec=5 on a slow machine, and systemd killed a
+                // daemon that was about to report the camera lost.
+                if (notifier_.watchdog_due(now)) notifier_.pet(now);
                 if (Clock::now() - last_frame_at_ >= stall_timeout) {
                     on_lost("no frame for " + seconds_text(stall_timeout));
                 }

@@ -2,11 +2,13 @@
 # SPDX-License-Identifier: MIT
 # Installs what the VM system tests need (docs/testing.md), from Debian 12's packages: QEMU, a
 # Debian kernel with headers so DKMS builds v4l2loopback for it, busybox and cpio for the
-# initramfs, udev and libinput-tools for the libinput check. Called by .ci/install-deps; quick
-# when all is there already. Runs apt-get as root, or through sudo when started by a user.
+# initramfs, udev and libinput-tools for the libinput check, systemd, dbus and libpam-systemd
+# for the service scenario's boot (systemd as PID 1, logind, a user manager). Called by
+# .ci/install-deps; quick when all is there already. Runs apt-get as root, or through sudo
+# when started by a user.
 set -eu
 packages="qemu-system-x86 linux-image-amd64 linux-headers-amd64 dkms v4l2loopback-dkms
-  busybox-static cpio kmod udev libinput-tools"
+  busybox-static cpio kmod udev libinput-tools systemd dbus libpam-systemd"
 if [ "$(id -u)" -eq 0 ]; then as_root=""; else as_root="sudo"; fi
 
 # v4l2loopback built for some installed kernel (DKMS builds it for each one with headers).

@@ -22,15 +22,16 @@ find_kernel || unavailable "no /boot/vmlinuz-VERSION with a v4l2loopback module 
 [ -r "$kernel_image" ] || unavailable "cannot read $kernel_image (Debian makes it root-only; run as root)"
 echo "kernel $kernel_version ($kernel_image)"
 
-# The initramfs only mounts the host's root over virtio-9p and hands over to it (guest/init):
-# everything else, modprobe included, comes from the host's own files.
+# The initramfs only mounts the host's root over virtio-9p (with an overlay for a systemd boot)
+# and hands over to it (guest/init): everything else, modprobe included, comes from the host's
+# own files.
 root=$(mktemp -d)
 trap 'rm -rf "$root"' EXIT
-mkdir -p "$root"/{bin,dev,proc,sys,host,modules}
+mkdir -p "$root"/{bin,dev,proc,sys,host,lower,rw,modules}
 cp /bin/busybox "$root/bin/busybox"
 cp "$here/guest/init" "$root/init"
 chmod +x "$root/init"
-for module in virtio_pci 9pnet_virtio 9p; do
+for module in virtio_pci 9pnet_virtio 9p overlay; do
   modprobe -S "$kernel_version" --show-depends "$module" | awk '$1 == "insmod" {print $2}'
 done | awk '!seen[$0]++' | while read -r file; do
   cp "$file" "$root/modules/"
