@@ -225,6 +225,45 @@ TEST(SceneRenderer, MotionBlurSoftensAMovingTargetsEdges) {
     EXPECT_NEAR(a.truth.area, b.truth.area, 0.01 * b.truth.area) << "mask is not blurred";
 }
 
+// Mean column of the mask's pixels in rows [top, bottom).
+double mean_column(const cv::Mat& mask, int top, int bottom) {
+    double sum = 0, count = 0;
+    for (int y = top; y < bottom; ++y) {
+        for (int x = 0; x < mask.cols; ++x) {
+            if (!mask.at<std::uint8_t>(y, x)) continue;
+            sum += x;
+            count += 1;
+        }
+    }
+    return count > 0 ? sum / count : -1;
+}
+
+TEST(SceneRenderer, RollingShutterShearsATargetMovingSideways) {
+    SceneSpec moving = still(Target::sphere, 0.6, 0.3);
+    moving.path.push_back({1.0, 0.7, 0.5, 0.6});  // about 256 px/s to the right
+    moving.blur = 0;
+    moving.readout_seconds = 0.1;  // slow, so that the shear is many pixels
+    SceneSpec shuttered = moving;
+    shuttered.rolling_shutter = true;
+    const RenderedFrame global = Renderer(moving).render(15);
+    const RenderedFrame rolling = Renderer(shuttered).render(15);
+    const cv::Rect box = cv::boundingRect(rolling.mask);
+    const int quarter = box.height / 4;
+    // Rows read later show the target further right: the bottom quarter's middle is right of
+    // the top quarter's by the travel over the rows' readout (~ 256 px/s x 0.1 s x 0.5).
+    const double shear = mean_column(rolling.mask, box.br().y - quarter, box.br().y) -
+                         mean_column(rolling.mask, box.y, box.y + quarter);
+    EXPECT_GT(shear, 5.0);
+    const cv::Rect still_box = cv::boundingRect(global.mask);
+    const int still_quarter = still_box.height / 4;
+    EXPECT_NEAR(mean_column(global.mask, still_box.br().y - still_quarter, still_box.br().y),
+                mean_column(global.mask, still_box.y, still_box.y + still_quarter), 0.5);
+    // The truth is the sheared mask, as the picture shows it.
+    EXPECT_EQ(cv::countNonZero(rolling.mask != 0),
+              cvRound(rolling.truth.area * static_cast<double>(rolling.mask.total())));
+    EXPECT_NEAR(rolling.truth.area, global.truth.area, 0.02 * global.truth.area);
+}
+
 TEST(SceneRenderer, JpegChangesPixelsButNotTruth) {
     SceneSpec clean = preset("jpeg");
     clean.jpeg_quality = 0;

@@ -94,7 +94,9 @@ INSTANTIATE_TEST_SUITE_P(
                       Expectation{"pause", 0.90, 4.0, std::nullopt},  // holds still 3.5 s
                       Expectation{"push", 0.90, 4.0, std::nullopt},
                       // Auto-exposure and white balance hunting (+-20% gain, +-10% a channel).
-                      Expectation{"drift", 0.98, 1.5, 0.9}),
+                      Expectation{"drift", 0.98, 1.5, 0.9},
+                      // A rolling shutter's skew on realworld's hand at twice its speed.
+                      Expectation{"skew", 0.98, 1.5, 0.7}),
     [](const ::testing::TestParamInfo<Expectation>& param) {
         return std::string(param.param.preset);
     });

@@ -12,6 +12,7 @@ namespace raypoint::scene {
 namespace {
 
 constexpr std::uint32_t rightdown_seed = 12;  // its place in `names` below, plus one
+constexpr std::uint32_t realworld_seed = 5;
 
 // A 15 cm ball on a thread, an adult hand (wrist to fingertip) or a paper one of that size.
 constexpr double sphere_size_m = 0.15;
@@ -234,13 +235,25 @@ SceneSpec make(std::string_view name, std::uint32_t seed) {
         s.drift_period = 3.0;
         return s;
     }
+    if (name == "skew") {
+        // realworld's room and path (its seed) at twice its speed, through a cheap webcam's
+        // rolling shutter: rows read over 30 ms of the 33 ms frame, up to ~10 px of shear at
+        // 640x480. Only the shutter and the speed differ from realworld.
+        SceneSpec s = make("realworld", realworld_seed);
+        s.name = std::string(name);
+        s.blur = 0.3;
+        s.speed = 1.8;
+        s.rolling_shutter = true;
+        s.readout_seconds = 0.030;
+        return s;
+    }
     return {};
 }
 
-constexpr std::array<std::string_view, 19> names{
+constexpr std::array<std::string_view, 20> names{
     "ideal",   "lowlight", "interfering", "nonconvex",   "realworld", "hd60",  "exposure",
     "jpeg",    "fast",     "pause",       "push",        "rightdown", "click", "drag",
-    "flicker", "drift",    "rightclick",  "doubleclick", "scroll"};
+    "flicker", "drift",    "rightclick",  "doubleclick", "scroll",    "skew"};
 
 }  // namespace
 

@@ -55,6 +55,8 @@ struct Renderer::Assets {
 namespace {
 
 constexpr double blur_step_px = 2.0;  // sub-frame spacing: larger steps show as ghost edges
+// Rolling shutter: rows read at one time. 4 rows at 480 are 0.2 ms of a 25 ms readout.
+constexpr int rolling_band_rows = 4;
 constexpr int max_sub_frames = 12;
 constexpr int sensor_band_rows = 16;
 
@@ -135,6 +137,32 @@ SubFrames exposure_placements(const Renderer::Assets& a, const SceneSpec& spec, 
         if (auto p = place(a, spec, when)) subs.placements.push_back(*p);
     }
     return subs;
+}
+
+// The rows a sensor reads at one time. A global shutter is one band, the whole frame at t; with
+// SceneSpec::rolling_shutter the rows are read top to bottom over readout_seconds (row y at
+// t + readout_seconds * y / height, as the flicker bands are), in bands of rolling_band_rows
+// each exposed at its middle row's time, so a target moving sideways shears.
+struct RowBand {
+    cv::Rect rows;
+    SubFrames subs;
+    std::optional<Placement> mid;
+};
+
+std::vector<RowBand> row_bands(const Renderer::Assets& a, const SceneSpec& spec, double t) {
+    std::vector<RowBand> bands;
+    if (!spec.rolling_shutter || spec.readout_seconds <= 0) {
+        bands.push_back({cv::Rect(0, 0, spec.width, spec.height), exposure_placements(a, spec, t),
+                         place(a, spec, t)});
+        return bands;
+    }
+    for (int top = 0; top < spec.height; top += rolling_band_rows) {
+        const int rows = std::min(rolling_band_rows, spec.height - top);
+        const double when = t + spec.readout_seconds * (top + 0.5 * rows) / spec.height;
+        bands.push_back({cv::Rect(0, top, spec.width, rows), exposure_placements(a, spec, when),
+                         place(a, spec, when)});
+    }
+    return bands;
 }
 
 // CV_32FC3 light over roi (full light, vignetted): the background with the target blended
@@ -236,24 +264,34 @@ RenderedFrame Renderer::render(int index) const {
     const Assets& a = *assets_;
     const cv::Rect frame_rect(0, 0, spec_.width, spec_.height);
     const double t = frame_time(index);
-    const SubFrames subs = exposure_placements(a, spec_, t);
-    const std::optional<Placement> mid = place(a, spec_, t);
+    const std::vector<RowBand> bands = row_bands(a, spec_, t);
 
     cv::Rect roi;
-    for (const Placement& p : subs.placements)
-        roi |= p.bounds();
-    if (mid) roi |= mid->bounds();
+    for (const RowBand& band : bands) {
+        for (const Placement& p : band.subs.placements)
+            roi |= p.bounds() & band.rows;
+        if (band.mid) roi |= band.mid->bounds() & band.rows;
+    }
     roi &= frame_rect;
 
     RenderedFrame out;
+    out.mask = cv::Mat::zeros(spec_.height, spec_.width, CV_8U);
     cv::Mat target;
-    if (!roi.empty() && !subs.placements.empty()) {
-        target = composite(a, roi, subs, mid ? *mid : subs.placements.back());
+    if (!roi.empty()) {
+        target.create(roi.size(), CV_32FC3);
+        for (const RowBand& band : bands) {
+            const cv::Rect part = roi & band.rows;
+            if (part.empty()) continue;
+            if (band.subs.placements.empty()) {
+                a.background(part).copyTo(target(part - roi.tl()));
+            } else {
+                composite(a, part, band.subs, band.mid ? *band.mid : band.subs.placements.back())
+                    .copyTo(target(part - roi.tl()));
+            }
+            if (band.mid) band.mid->mask(part).copyTo(out.mask(part));
+        }
     }
     out.bgr = expose(a, spec_, index, target, roi);
-
-    out.mask = cv::Mat::zeros(spec_.height, spec_.width, CV_8U);
-    if (mid && !roi.empty()) mid->mask(roi).copyTo(out.mask(roi));
     out.truth = measure_mask(out.mask(roi), roi.tl(), frame_rect.size());
     out.truth.frame = index;
     out.truth.t = t;

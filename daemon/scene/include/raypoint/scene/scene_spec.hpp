@@ -69,6 +69,9 @@ struct SceneSpec {
     double flicker_depth = 0.0;
     double flicker_hz = 100.0;
     double readout_seconds = 0.025;
+    // The target too is read row by row over readout_seconds: moving sideways it shears, moving
+    // down it stretches (the rolling shutter's skew). Off: the target is drawn at one time.
+    bool rolling_shutter = false;
     // Slow auto-exposure and white-balance hunting: the gain swings by +-exposure_drift and each
     // channel's by +-white_balance_drift (blue and red in opposite phase, green between) over
     // drift_period seconds.
