@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "click_eval.hpp"
 
+#include "click_gesture_score.hpp"
 #include "click_truth.hpp"
 
 #include <algorithm>
@@ -17,9 +18,6 @@
 namespace raypoint::daemon {
 namespace {
 
-// A press counts for an intended click from the push's start until this long after its
-// intended release: a late press is still that push's, not a false click.
-constexpr double match_slack = 0.3;  // s
 // The pushes the targets are stated for: at least 15% closer within 0.6 s.
 constexpr double target_depth = 0.15;
 constexpr double target_seconds = 0.6;
@@ -47,98 +45,6 @@ std::string bin(double value, const std::vector<double>& edges, const char* unit
         }
     }
     return "?";
-}
-
-struct Press {
-    double at = 0;
-    std::optional<double> released;
-    bool dragged = false;
-    cv::Point2d cursor;    // after the press's own motion (the undo)
-    bool doubled = false;  // came after a whole click in the same command: a double click
-};
-
-// What a clip's intended gesture got from the pointer, besides the left presses.
-struct Outputs {
-    std::vector<double> rights;                 // s: right presses
-    std::vector<std::pair<double, int>> wheel;  // s, hi-res units (1/120 detent)
-};
-
-bool any_in(const std::vector<double>& times, double from, double to) {
-    return std::any_of(times.begin(), times.end(), [&](double t) { return t >= from && t <= to; });
-}
-
-// The wheel's sum over [from, to] and when it first moved (or nothing).
-std::pair<int, std::optional<double>> wheel_in(const Outputs& out, double from, double to) {
-    int sum = 0;
-    std::optional<double> first;
-    for (const auto& [t, units] : out.wheel) {
-        if (t < from || t > to) continue;
-        sum += units;
-        if (!first) first = t;
-    }
-    return {sum, first};
-}
-
-struct GestureScore {
-    bool found = false;
-    bool as_left = false;
-    std::optional<double> at;  // the gesture's press or first wheel step
-};
-
-// A right click, double click or scroll against what the pointer did in its span; the left
-// presses in the span are this gesture's (used), right or wrong.
-GestureScore score_gesture(const scene::IntendedClick& g, const std::vector<Press>& presses,
-                           std::vector<bool>& used, const Outputs& out) {
-    // `used` marks them so that no left click's precision counts them.
-    const double to = g.release + match_slack;
-    GestureScore score;
-    bool left = false;
-    for (std::size_t i = 0; i < presses.size(); ++i) {
-        if (used[i] || presses[i].at < g.start || presses[i].at > to) continue;
-        used[i] = true;
-        left = true;
-        if (g.kind == scene::GestureKind::double_click && presses[i].doubled && !score.found) {
-            score.found = true;
-            score.at = presses[i].at;
-        }
-    }
-    const bool right = any_in(out.rights, g.start, to);
-    const auto [wheel, first_wheel] = wheel_in(out, g.start, to);
-    switch (g.kind) {
-        case scene::GestureKind::right:
-            score.found = right;
-            for (double t : out.rights) {
-                if (t >= g.start && t <= to && !score.at) score.at = t;
-            }
-            break;
-        case scene::GestureKind::scroll_up:
-        case scene::GestureKind::scroll_down:
-            score.found = !left && !right &&
-                          (g.kind == scene::GestureKind::scroll_up ? wheel > 0 : wheel < 0);
-            score.at = first_wheel;
-            break;
-        case scene::GestureKind::double_click:
-        case scene::GestureKind::click:
-        case scene::GestureKind::drag:
-            break;
-    }
-    score.as_left = left && !score.found;
-    return score;
-}
-
-GestureTally& gesture_tally(Tally& tally, scene::GestureKind kind) {
-    switch (kind) {
-        case scene::GestureKind::right:
-            return tally.right;
-        case scene::GestureKind::double_click:
-            return tally.double_click;
-        case scene::GestureKind::scroll_up:
-        case scene::GestureKind::scroll_down:
-        case scene::GestureKind::click:
-        case scene::GestureKind::drag:
-            break;
-    }
-    return tally.scroll;
 }
 
 }  // namespace
