@@ -87,6 +87,10 @@ const std::vector<Key>& schema() {
             "refined: a fill this many times the blocks' area has leaked and is redone",
             [](auto& c) -> auto& { return c.core.estimator.fill_limit; }),
         real_key(
+            "estimator", "fill_growth", 0.0, 100.0,
+            "refined fill larger than this times the last frame's has leaked (0: no check)",
+            [](auto& c) -> auto& { return c.core.estimator.fill_growth; }),
+        real_key(
             "estimator", "extremity", 0.0, 1.0,
             "refined: a region crossing the border keeps its part beyond this share of its reach",
             [](auto& c) -> auto& { return c.core.estimator.extremity; }),
@@ -94,6 +98,10 @@ const std::vector<Key>& schema() {
             "estimator", "extremity_contact", 1, 1000,
             "refined: border pixels from which a region counts as crossing the border",
             [](auto& c) -> auto& { return c.core.estimator.extremity_contact; }),
+        integer_key(
+            "estimator", "diagonal_tolerance", 0, 765,
+            "refined fill: step diagonally between pixels of colours this close (0: never)",
+            [](auto& c) -> auto& { return c.core.estimator.diagonal_tolerance; }),
         // [tracking] paper 4.2
         real_key(
             "tracking", "startup_seconds", 0.0, 30.0,

@@ -47,6 +47,7 @@ std::optional<cv::Point2f> ImageEvidence::detect() noexcept {
 // for a push.
 Estimate ImageEvidence::estimate(cv::Point2f inner) noexcept {
     images_.ensure_edges();
+    estimator_.use_color(&images_.color());
     Estimate estimate = estimator_.estimate(images_.edges(), inner);
     if (!estimate.crosses_border) {
         on_end_ = false;

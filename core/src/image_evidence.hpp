@@ -27,7 +27,10 @@ class ImageEvidence final : public FrameEvidence {
         return patch_mean(images_.previous_color(), at);
     }
 
-    void forget_target() noexcept override { on_end_ = false; }
+    void forget_target() noexcept override {
+        on_end_ = false;
+        estimator_.forget_target();
+    }
 
   private:
     bool end_is_moving(const Estimate& estimate) const noexcept;

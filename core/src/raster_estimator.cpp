@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 
 #include "estimator_common.hpp"
 
@@ -17,6 +18,9 @@ struct Step {
     int y;
 };
 constexpr std::array<Step, 4> neighbour_steps{{{-1, 0}, {1, 0}, {0, -1}, {0, 1}}};
+// The fill's steps: the four neighbours, then the four diagonal ones (same_color()).
+constexpr std::array<Step, 8> fill_steps{
+    {{-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}}};
 
 }  // namespace
 
@@ -151,13 +155,18 @@ bool RasterEstimator::fill(const cv::Mat& edges, bool within_blocks, double limi
         filled_[static_cast<std::size_t>(pixel.y) * width_ + pixel.x] = inside;
         queue_.push_back(pixel);
     }
+    const bool colors = color_ != nullptr && settings_.diagonal_tolerance > 0 &&
+                        color_->cols == width_ && color_->rows == height_;
+    const std::size_t steps = colors ? fill_steps.size() : neighbour_steps.size();
     for (std::size_t head = 0; head < queue_.size(); ++head) {
         if (static_cast<double>(queue_.size()) > limit) return false;
-        for (const Step step : neighbour_steps) {
+        for (std::size_t s = 0; s < steps; ++s) {
+            const Step step = fill_steps[s];
             const cv::Point next(queue_[head].x + step.x, queue_[head].y + step.y);
             if (!contains(next)) continue;
             const std::size_t index = static_cast<std::size_t>(next.y) * width_ + next.x;
             if (filled_[index] != 0 || edges.ptr<std::uint8_t>(next.y)[next.x] != 0) continue;
+            if (s >= neighbour_steps.size() && !same_color(queue_[head], next)) continue;
             if (within_blocks && trace_.blocks[block_of_row_[next.y] * trace_.blocks_wide +
                                                block_of_column_[next.x]] == 0) {
                 continue;
@@ -167,6 +176,16 @@ bool RasterEstimator::fill(const cv::Mat& edges, bool within_blocks, double limi
         }
     }
     return true;
+}
+
+// A diagonal step the four neighbours could not make crosses a one-pixel diagonal line of edge
+// pixels; it joins the two sides only where they have one colour (a finger's middle and the
+// palm), not where an outline's gap runs between a hand and the wall behind it.
+bool RasterEstimator::same_color(cv::Point from, cv::Point to) const noexcept {
+    const cv::Vec3b a = color_->ptr<cv::Vec3b>(from.y)[from.x];
+    const cv::Vec3b b = color_->ptr<cv::Vec3b>(to.y)[to.x];
+    const int distance = std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
+    return distance <= settings_.diagonal_tolerance;
 }
 
 // The outline is the ridge of the edge band, not its inner side: from the filled region, climb
@@ -204,9 +223,13 @@ void RasterEstimator::add_edge_band(const cv::Mat& edges, double& area, double& 
 }
 
 void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept {
-    if (!fill(edges, false, settings_.fill_limit * estimate.area)) {
+    double limit = settings_.fill_limit * estimate.area;
+    if (settings_.fill_growth > 0.0 && last_fill_ > 0)
+        limit = std::min(limit, settings_.fill_growth * static_cast<double>(last_fill_));
+    if (!fill(edges, false, limit)) {
         fill(edges, true, static_cast<double>(filled_.size()));
     }
+    last_fill_ = queue_.size();
     double area = 0.0;
     double sum_x = 0.0;
     double sum_y = 0.0;

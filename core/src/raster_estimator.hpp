@@ -12,6 +12,8 @@ class RasterEstimator final : public RayEstimatorBase {
   public:
     explicit RasterEstimator(const EstimatorSettings& settings);
     Estimate estimate(const cv::Mat& edges, cv::Point2f inner) noexcept override;
+    void use_color(const cv::Mat* color) noexcept override { color_ = color; }
+    void forget_target() noexcept override { last_fill_ = 0; }
 
   private:
     void resize(const cv::Mat& edges);
@@ -27,6 +29,9 @@ class RasterEstimator final : public RayEstimatorBase {
     // outline's ridge (docs/estimators.md).
     void refine(const cv::Mat& edges, Estimate& estimate) noexcept;
     bool fill(const cv::Mat& edges, bool within_blocks, double limit) noexcept;
+    // Whether the fill may step diagonally from `from` to `to` (EstimatorSettings::
+    // diagonal_tolerance).
+    bool same_color(cv::Point from, cv::Point to) const noexcept;
     bool contains(cv::Point pixel) const noexcept {
         // One unsigned comparison an axis: negative coordinates wrap to large ones.
         return static_cast<unsigned>(pixel.x) < static_cast<unsigned>(width_) &&
@@ -40,6 +45,8 @@ class RasterEstimator final : public RayEstimatorBase {
     static constexpr unsigned char inside = 1;
     static constexpr unsigned char band = 2;
 
+    const cv::Mat* color_ = nullptr;  // EstimatorSettings::diagonal_tolerance; not owned
+    std::size_t last_fill_ = 0;       // pixels the last refined fill reached; 0 = none yet
     int width_ = 0;
     int height_ = 0;
     std::vector<int> block_of_column_;

@@ -12,6 +12,8 @@ Settings paper_settings() {
     settings.tracking.min_area = 0.02;
     settings.estimator.area_mode = AreaMode::blocks;
     settings.estimator.extremity = 0.0;
+    settings.estimator.diagonal_tolerance = 0;
+    settings.estimator.fill_growth = 0.0;
     settings.tracking.keep_still_target = false;
     settings.tracking.abandon_seconds = 0.0;
     settings.tracking.search_weighting = SearchWeighting::all;

@@ -54,6 +54,13 @@ class Estimator {
     // once warmed up on a given image size.
     virtual Estimate estimate(const cv::Mat& edges, cv::Point2f inner) noexcept = 0;
     virtual const EstimatorTrace& trace() const noexcept = 0;
+    // The colour image (CV_8UC3, the edge image's size) of the frame the next estimates are of,
+    // for AreaMode::refined's diagonal steps (EstimatorSettings::diagonal_tolerance); it must
+    // outlive those estimates. Without it the fill never steps diagonally.
+    virtual void use_color(const cv::Mat* color) noexcept { (void)color; }
+    // The target was dropped or a new one picked: what the estimator kept from the last frame's
+    // estimate (EstimatorSettings::fill_growth) goes.
+    virtual void forget_target() noexcept {}
 };
 
 std::unique_ptr<Estimator> make_estimator(const EstimatorSettings& settings);

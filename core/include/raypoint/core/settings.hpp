@@ -66,6 +66,12 @@ struct EstimatorSettings {
     // AreaMode::refined: a fill larger than this times the selected blocks' area has leaked
     // through a gap in the outline and is redone within the selected blocks.
     double fill_limit = 1.5;
+    // AreaMode::refined: a fill larger than this times the last frame's fill of the same target
+    // has leaked too, and is redone within the selected blocks: a hand does not grow by 75% in a
+    // frame, a region that runs out through a gap into a shirt or a shelf does. 0 = no such
+    // check. 1.25 lost a rendered hand entering the picture; 1.5-1.75 measured the same
+    // (docs/settings.md).
+    double fill_growth = 1.75;
     // AreaMode::refined: a region with at least extremity_contact pixels on the image border is
     // an arm or a body coming in from outside the picture; its part beyond this share of the
     // farthest pixel's distance from the border crossing is its far end, the target when it
@@ -74,6 +80,14 @@ struct EstimatorSettings {
     // 100% tracked) and loses no clip; 0.4 and 0.6 each lose one (docs/settings.md).
     double extremity = 0.5;
     int extremity_contact = 16;
+    // AreaMode::refined: the fill also steps diagonally between two pixels whose colours differ
+    // by at most this (sum of |channel difference|), crossing a one-pixel diagonal line of edge
+    // pixels. A finger at 160x120 is edge pixels but for a line of its own colour down its
+    // middle, cut from the palm by its base's edges only diagonally; a gap in an outline
+    // between a hand and a wall or a shirt joins pixels of two colours. 0 = four neighbours
+    // only. 15 took the 15 fps hand from 2.45 to 1.35 px; 8-25 measure the same
+    // (docs/settings.md).
+    int diagonal_tolerance = 15;
 };
 
 struct TrackingSettings {
