@@ -125,8 +125,8 @@ RAYPOINT_AVX2 inline void store_sixteen(std::uint8_t* at, __m256i low, __m256i h
 // A whole row of the magnitude and edge images, every plane at once, 16 pixels a step in
 // 16-bit lanes (a gradient is within +-1020), the squares summed in one vpmaddwd of the
 // interleaved gx, gy (at most 2 x 1020^2, 32 bits). The same integers, and the same IEEE
-// square root and truncation, as squared_gradients() and magnitudes(): the same bytes, with a
-// third of the instructions and no row of squares written out and read back. Needs width >= 18.
+// square root and truncation, as squared_gradients() and magnitudes(): the same bytes, with
+// about half the instructions (no row of squares written out and read back). Needs width >= 18.
 RAYPOINT_AVX2 void edge_row_avx2(const PlaneRows* planes, int plane_count, std::uint8_t* magnitude,
                                  std::uint8_t* edge, int width, int threshold) noexcept {
     const auto border = [&](int i, int left, int right) {
