@@ -96,7 +96,9 @@ INSTANTIATE_TEST_SUITE_P(
                       // Auto-exposure and white balance hunting (+-20% gain, +-10% a channel).
                       Expectation{"drift", 0.98, 1.5, 0.9},
                       // A rolling shutter's skew on realworld's hand at twice its speed.
-                      Expectation{"skew", 0.98, 1.5, 0.7}),
+                      Expectation{"skew", 0.98, 1.5, 0.7},
+                      // Mains flicker's bands rolling through every frame, MJPEG quality 60.
+                      Expectation{"flicker", 0.98, 1.5, 0.7}),
     [](const ::testing::TestParamInfo<Expectation>& param) {
         return std::string(param.param.preset);
     });
