@@ -23,6 +23,9 @@ constexpr int band_rows = 4;
 constexpr int ratio_step = 8;  // every eighth column: 80 ratios a band at 160x120
 // Pixels this dark or saturated say little about the light: their ratio is noise or capped.
 constexpr int darkest = 16;
+// A band whose light changed by at most this (in 1/gain_one: 0.8%, two grey levels at 255) is
+// left to the paper's offset; when every band is, the relit difference is not computed.
+constexpr int steady_light = 2;
 constexpr int brightest = 254;
 
 // |a - b| byte by byte; the unsigned form vectorizes.
@@ -170,16 +173,20 @@ void DifferenceStage::reset() noexcept {
 }
 
 // Each band's gain at its middle row, linearly between the middles (in half rows, so that the
-// middle of an even band is a whole number), held beyond the first and the last.
-void DifferenceStage::estimate_row_gains(const cv::Mat& grey,
+// middle of an even band is a whole number), held beyond the first and the last. Whether any
+// band's light changed by more than steady_light.
+bool DifferenceStage::estimate_row_gains(const cv::Mat& grey,
                                          const cv::Mat& previous_grey) noexcept {
     const int rows = grey.rows;
     const int bands = static_cast<int>(band_gains_.size());
+    bool changed = false;
     for (int band = 0; band < bands; ++band) {
         const int top = band * band_rows;
         band_gains_[band] =
             band_gain(grey, previous_grey, top, std::min(band_rows, rows - top), reciprocal_);
+        changed = changed || std::abs(band_gains_[band] - gain_one) > steady_light;
     }
+    if (!changed) return false;
     const auto middle = [](int band) { return 2 * band * band_rows + band_rows - 1; };
     for (int y = 0; y < rows; ++y) {
         const int at = 2 * y;
@@ -193,6 +200,7 @@ void DifferenceStage::estimate_row_gains(const cv::Mat& grey,
         row_gains_[y] =
             (band_gains_[band] * (span - into) + band_gains_[band + 1] * into + span / 2) / span;
     }
+    return true;
 }
 
 // The difference image is the grey one (paper 4.1): its centre of mass picks the target, and
@@ -221,8 +229,7 @@ void DifferenceStage::compute(const cv::Mat& grey, const cv::Mat& previous_grey,
     offset_ = offset_of(grey_histogram, minima_);
     movement_ = compensated_sum(grey_histogram, offset_);
     relit_current_ = false;
-    if (rows_) {
-        estimate_row_gains(grey, previous_grey);
+    if (rows_ && estimate_row_gains(grey, previous_grey)) {
         std::uint8_t* const grey_row = grey_row_.data();
         grey_bins_ = {};
         for (int y = 0; y < height; ++y) {

@@ -46,7 +46,7 @@ class DifferenceStage {
     const cv::Mat& previous_color_relit() const noexcept { return relit_; }
 
   private:
-    void estimate_row_gains(const cv::Mat& grey, const cv::Mat& previous_grey) noexcept;
+    bool estimate_row_gains(const cv::Mat& grey, const cv::Mat& previous_grey) noexcept;
 
     bool channels_;  // the movement value from the largest per-channel difference
     bool rows_;      // Compensation::rows: each band of rows' light ratio divided out first
