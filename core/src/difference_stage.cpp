@@ -23,10 +23,10 @@ constexpr int band_rows = 4;
 constexpr int ratio_step = 8;  // every eighth column: 80 ratios a band at 160x120
 // Pixels this dark or saturated say little about the light: their ratio is noise or capped.
 constexpr int darkest = 16;
+constexpr int brightest = 254;
 // A band whose light changed by at most this (in 1/gain_one: 0.8%, two grey levels at 255) is
 // left to the paper's offset; when every band is, the relit difference is not computed.
 constexpr int steady_light = 2;
-constexpr int brightest = 254;
 
 // |a - b| byte by byte; the unsigned form vectorizes.
 void absolute_difference(const std::uint8_t* __restrict a, const std::uint8_t* __restrict b,
