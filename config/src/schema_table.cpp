@@ -7,6 +7,7 @@
 namespace raypoint::config {
 
 using core::AreaMode;
+using core::Compensation;
 using core::EdgeSource;
 using core::EstimatorKind;
 using core::SearchWeighting;
@@ -51,6 +52,11 @@ const std::vector<Key>& schema() {
             "preprocess", "compensation_minima", 1, 255,
             "distinct minima of the difference image whose largest is the brightness change",
             [](auto& c) -> auto& { return c.core.preprocess.compensation_minima; }),
+        choice_key<Compensation>(
+            "preprocess", "compensation",
+            "light change divided out per band of rows before the offset (flicker) or not (paper)",
+            {{Compensation::frame, "frame"}, {Compensation::rows, "rows"}},
+            [](auto& c) -> auto& { return c.core.preprocess.compensation; }),
         // [estimator] paper 3
         choice_key<EstimatorKind>(
             "estimator", "method", "object projection feature estimator (paper 3.1-3.4)",

@@ -1,19 +1,49 @@
 // SPDX-License-Identifier: MIT
 // The difference image of preprocessing (paper 4.1): absolute difference, brightness
-// compensation and the global movement value.
+// compensation (per band of rows, then the paper's offset) and the global movement value.
 
 #include "raypoint/core/difference_stage.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace raypoint::core {
 namespace {
+
+// Light ratios (current / previous) in 1/256: 0.4% steps, 1 grey level at 255.
+constexpr int gain_bits = 8;
+constexpr int gain_one = 1 << gain_bits;
+// Ratios from 0.5 to 2, the extremes counted at the ends: mains flicker swings the light by
+// +-30% at most, and a band whose light halves or doubles is not one to compensate finely.
+constexpr int lowest_ratio = gain_one / 2;
+constexpr int ratio_bins = 2 * gain_one - lowest_ratio;
+// Working rows a light ratio is measured over: at 120 rows the flicker of 50 Hz mains read over
+// 25 ms repeats every 48 rows, so a band of 4 is a 30 degree slice of it.
+constexpr int band_rows = 4;
+constexpr int ratio_step = 8;  // every eighth column: 80 ratios a band at 160x120
+// Pixels this dark or saturated say little about the light: their ratio is noise or capped.
+constexpr int darkest = 16;
+constexpr int brightest = 254;
+// A band whose light changed by at most this (in 1/gain_one: 0.8%, two grey levels at 255) is
+// left to the paper's offset; when every band is, the relit difference is not computed.
+constexpr int steady_light = 2;
 
 // |a - b| byte by byte; the unsigned form vectorizes.
 void absolute_difference(const std::uint8_t* __restrict a, const std::uint8_t* __restrict b,
                          std::uint8_t* __restrict out, int length) noexcept {
     for (int i = 0; i < length; ++i)
         out[i] = static_cast<std::uint8_t>(std::max(a[i], b[i]) - std::min(a[i], b[i]));
+}
+
+// b x gain byte by byte, gain in 1/gain_one (below 2), rounded and capped at 255. The gain is
+// applied in 1/128 (the product then fits 16 bits, 8 lanes a multiply): within a grey level.
+void scale(const std::uint8_t* __restrict b, int gain, std::uint8_t* __restrict out,
+           int length) noexcept {
+    const auto g = static_cast<std::uint16_t>((gain + 1) >> 1);
+    for (int i = 0; i < length; ++i) {
+        const auto product = static_cast<std::uint16_t>(b[i] * g + 64U);
+        out[i] = static_cast<std::uint8_t>(std::min<std::uint16_t>(product >> 7U, 255));
+    }
 }
 
 using PartialHistograms = std::array<std::array<int, 256>, 4>;
@@ -73,6 +103,39 @@ double compensated_sum(const std::array<int, 256>& histogram, int offset) noexce
     return static_cast<double>(sum);
 }
 
+// The median of the ratios current / previous over the pixels of rows [top, top + rows) (every
+// ratio_step-th column) that are neither dark nor saturated in either frame, in 1/gain_one; 1
+// when under a quarter of them are.
+// The median: the target moving through the band changes fewer than half of its pixels.
+int band_gain(const cv::Mat& grey, const cv::Mat& previous_grey, int top, int rows,
+              const std::array<std::uint32_t, 256>& reciprocal) noexcept {
+    // One bin past the ratios collects the pixels left out, so that the loop has no branch.
+    std::array<int, ratio_bins + 1> bins{};
+    for (int y = top; y < top + rows; ++y) {
+        const std::uint8_t* now = grey.ptr<std::uint8_t>(y);
+        const std::uint8_t* before = previous_grey.ptr<std::uint8_t>(y);
+        for (int x = 0; x < grey.cols; x += ratio_step) {
+            const unsigned a = now[x];
+            const unsigned b = before[x];
+            const unsigned usable = static_cast<unsigned>(a - darkest <= brightest - darkest) &
+                                    static_cast<unsigned>(b - darkest <= brightest - darkest);
+            const unsigned ratio = (a * reciprocal[b] + 0x8000U) >> 16U;
+            const unsigned bin = std::min(std::max(ratio, unsigned{lowest_ratio}) - lowest_ratio,
+                                          unsigned{ratio_bins - 1});
+            ++bins[usable != 0U ? bin : unsigned{ratio_bins}];
+        }
+    }
+    const int sampled = rows * ((grey.cols + ratio_step - 1) / ratio_step);
+    const int counted = sampled - bins[ratio_bins];
+    if (4 * counted < sampled) return gain_one;
+    int below = 0;
+    for (int bin = 0; bin < ratio_bins; ++bin) {
+        below += bins[bin];
+        if (2 * below >= counted) return lowest_ratio + bin;
+    }
+    return gain_one;
+}
+
 }  // namespace
 
 int brightness_offset(const cv::Mat& difference, int minima) noexcept {
@@ -84,8 +147,19 @@ int brightness_offset(const cv::Mat& difference, int minima) noexcept {
 
 DifferenceStage::DifferenceStage(const PreprocessSettings& settings)
     : channels_(settings.movement_source == EdgeSource::max_channel),
+      rows_(settings.compensation == Compensation::rows),
       minima_(settings.compensation_minima),
-      channel_row_(static_cast<std::size_t>(settings.work_width) * 6) {
+      channel_row_(static_cast<std::size_t>(settings.work_width) * 6),
+      band_gains_(static_cast<std::size_t>((settings.work_height + band_rows - 1) / band_rows)),
+      row_gains_(static_cast<std::size_t>(settings.work_height), gain_one),
+      grey_row_(static_cast<std::size_t>(settings.work_width)) {
+    if (rows_) {
+        relit_.create(settings.work_height, settings.work_width, CV_8UC3);
+        relit_difference_.create(settings.work_height, settings.work_width, CV_8U);
+    }
+    reciprocal_[0] = 0;
+    for (std::uint32_t value = 1; value < reciprocal_.size(); ++value)
+        reciprocal_[value] = ((std::uint32_t{gain_one} << 16U) + value / 2) / value;
     difference_.create(settings.work_height, settings.work_width, CV_8U);
     difference_.setTo(cv::Scalar::all(0));
 }
@@ -94,44 +168,111 @@ void DifferenceStage::reset() noexcept {
     difference_.setTo(cv::Scalar::all(0));
     movement_ = 0.0;
     offset_ = 0;
+    relit_current_ = false;
+    std::fill(row_gains_.begin(), row_gains_.end(), gain_one);
+}
+
+// Each band's gain at its middle row, linearly between the middles (in half rows, so that the
+// middle of an even band is a whole number), held beyond the first and the last. Whether any
+// band's light changed by more than steady_light.
+bool DifferenceStage::estimate_row_gains(const cv::Mat& grey,
+                                         const cv::Mat& previous_grey) noexcept {
+    const int rows = grey.rows;
+    const int bands = static_cast<int>(band_gains_.size());
+    bool changed = false;
+    for (int band = 0; band < bands; ++band) {
+        const int top = band * band_rows;
+        band_gains_[band] =
+            band_gain(grey, previous_grey, top, std::min(band_rows, rows - top), reciprocal_);
+        changed = changed || std::abs(band_gains_[band] - gain_one) > steady_light;
+    }
+    if (!changed) return false;
+    const auto middle = [](int band) { return 2 * band * band_rows + band_rows - 1; };
+    for (int y = 0; y < rows; ++y) {
+        const int at = 2 * y;
+        int band = std::clamp((at - (band_rows - 1)) / (2 * band_rows), 0, bands - 1);
+        if (at < middle(0) || band + 1 >= bands) {
+            row_gains_[y] = band_gains_[band];
+            continue;
+        }
+        const int span = 2 * band_rows;
+        const int into = at - middle(band);
+        row_gains_[y] =
+            (band_gains_[band] * (span - into) + band_gains_[band + 1] * into + span / 2) / span;
+    }
+    return true;
 }
 
 // The difference image is the grey one (paper 4.1): its centre of mass picks the target, and
 // the target is what contrasts most. The movement value that starts a search may come from
 // the largest per-channel difference instead, which also sees a skin hand move over a wall of
 // its own brightness.
-// One pass over the rows: the grey difference image and its histogram, and the per-channel
-// difference's histogram; the offsets and the movement sums come from the histograms, so only
-// the grey image is compensated in place.
+// The grey difference and its histogram as they are (the paper's); under Compensation::rows the
+// same with each row of the previous image relit, kept when it leaves less movement: a light
+// change by band (flicker, gain) is explained by the ratios, an even offset (the paper's case)
+// by the paper's compensation. The offsets and the movement sums come from the histograms, so
+// only the kept grey image is compensated in place.
 void DifferenceStage::compute(const cv::Mat& grey, const cv::Mat& previous_grey,
                               const cv::Mat& color, const cv::Mat& previous_color) noexcept {
     const bool channels = channels_;  // a local: the stores below cannot change it
     const int width = difference_.cols;
+    const int height = difference_.rows;
     std::uint8_t* const channel_row = channel_row_.data();  // 3 * width, then 3 * width
     std::uint8_t* const strongest = channel_row + 3 * width;
     grey_bins_ = {};
-    channel_bins_ = {};
-    for (int y = 0; y < difference_.rows; ++y) {
+    for (int y = 0; y < height; ++y) {
         absolute_difference(grey.ptr<std::uint8_t>(y), previous_grey.ptr<std::uint8_t>(y),
                             difference_.ptr<std::uint8_t>(y), width);
         count(grey_bins_, difference_.ptr<std::uint8_t>(y), width);
-        if (!channels) continue;
-        absolute_difference(color.ptr<std::uint8_t>(y), previous_color.ptr<std::uint8_t>(y),
-                            channel_row, 3 * width);
-        // The max of each byte and the next two, contiguous so it vectorizes; pixel x's is at 3x.
-        for (int i = 0; i + 2 < 3 * width; ++i)
-            strongest[i] = std::max({channel_row[i], channel_row[i + 1], channel_row[i + 2]});
-        count_every_third(channel_bins_, strongest, width);
     }
-    const std::array<int, 256> grey_histogram = total(grey_bins_);
+    std::array<int, 256> grey_histogram = total(grey_bins_);
     offset_ = offset_of(grey_histogram, minima_);
     movement_ = compensated_sum(grey_histogram, offset_);
+    relit_current_ = false;
+    if (rows_ && estimate_row_gains(grey, previous_grey)) {
+        std::uint8_t* const grey_row = grey_row_.data();
+        grey_bins_ = {};
+        for (int y = 0; y < height; ++y) {
+            scale(previous_grey.ptr<std::uint8_t>(y), row_gains_[y], grey_row, width);
+            absolute_difference(grey.ptr<std::uint8_t>(y), grey_row,
+                                relit_difference_.ptr<std::uint8_t>(y), width);
+            count(grey_bins_, relit_difference_.ptr<std::uint8_t>(y), width);
+        }
+        grey_histogram = total(grey_bins_);
+        const int offset = offset_of(grey_histogram, minima_);
+        const double movement = compensated_sum(grey_histogram, offset);
+        if (movement < movement_) {
+            std::swap(difference_, relit_difference_);
+            offset_ = offset;
+            movement_ = movement;
+            relit_current_ = true;
+        }
+    }
+    if (channels || relit_current_) {
+        channel_bins_ = {};
+        for (int y = 0; y < height; ++y) {
+            const std::uint8_t* color_before = previous_color.ptr<std::uint8_t>(y);
+            if (relit_current_) {
+                // Flicker changes every channel alike: the grey image's gains serve them. The
+                // colour validation reads this image too (previous_color_relit()).
+                scale(color_before, row_gains_[y], relit_.ptr<std::uint8_t>(y), 3 * width);
+                color_before = relit_.ptr<std::uint8_t>(y);
+            }
+            if (!channels) continue;
+            absolute_difference(color.ptr<std::uint8_t>(y), color_before, channel_row, 3 * width);
+            // The max of each byte and the next two, contiguous so it vectorizes; pixel x's is
+            // at 3x.
+            for (int i = 0; i + 2 < 3 * width; ++i)
+                strongest[i] = std::max({channel_row[i], channel_row[i + 1], channel_row[i + 2]});
+            count_every_third(channel_bins_, strongest, width);
+        }
+    }
     if (channels) {
         const std::array<int, 256> channel_histogram = total(channel_bins_);
         movement_ = compensated_sum(channel_histogram, offset_of(channel_histogram, minima_));
     }
     const auto offset = static_cast<std::uint8_t>(offset_);
-    for (int y = 0; y < difference_.rows; ++y) {
+    for (int y = 0; y < height; ++y) {
         std::uint8_t* row = difference_.ptr<std::uint8_t>(y);
         for (int x = 0; x < width; ++x)
             row[x] = static_cast<std::uint8_t>(row[x] > offset ? row[x] - offset : 0);

@@ -7,6 +7,7 @@ Settings paper_settings() {
     Settings settings;
     settings.preprocess.edge_source = EdgeSource::luma;
     settings.preprocess.movement_source = EdgeSource::luma;
+    settings.preprocess.compensation = Compensation::frame;
     settings.preprocess.edge_threshold = 128;
     settings.tracking.search_threshold = 57600.0;
     settings.tracking.min_area = 0.02;

@@ -15,6 +15,13 @@ using test::bgr_view;
 using test::identity_settings;
 using test::uniform;
 
+// The paper's compensation alone (Compensation::frame), whose sums these tests work out by hand;
+// the compensation by band of rows has its own tests (test_difference_stage.cpp).
+PreprocessSettings paper_compensation(PreprocessSettings settings) {
+    settings.compensation = Compensation::frame;
+    return settings;
+}
+
 cv::Mat filled(cv::Size size, const std::vector<int>& values) {
     cv::Mat image(size, CV_8U);
     for (int i = 0; i < size.area(); ++i) {
@@ -72,7 +79,7 @@ TEST(Difference, FirstFrameHasNoPrevious) {
                 cv::Vec3b::all(static_cast<std::uint8_t>(50 + (3 * x + y) % 40));
         }
     }
-    Preprocessor pre(identity_settings());
+    Preprocessor pre(paper_compensation(identity_settings()));
     ASSERT_TRUE(pre.process(bgr_view(first)));
     EXPECT_FALSE(pre.has_previous());
     EXPECT_EQ(pre.movement(), 0.0);
@@ -113,7 +120,7 @@ TEST(Difference, MovingBlockOverSmallNoiseGivesTheExactCompensatedSum) {
                 cv::Vec3b::all(static_cast<std::uint8_t>((block ? 150 : 50) + n));
         }
     }
-    Preprocessor pre(identity_settings());
+    Preprocessor pre(paper_compensation(identity_settings()));
     ASSERT_TRUE(pre.process(bgr_view(first)));
     ASSERT_TRUE(pre.process(bgr_view(second)));
     EXPECT_EQ(pre.brightness_offset_applied(), 9);
@@ -125,7 +132,7 @@ TEST(Difference, MovingBlockOverSmallNoiseGivesTheExactCompensatedSum) {
 
     // With 5 minima the offset is 4: outside, n = 5..9 leave 1..5; per 10 consecutive x that
     // is 15, over 160 columns 16 * 15 = 240 a row. Inside the block 96 + n.
-    PreprocessSettings five = identity_settings();
+    PreprocessSettings five = paper_compensation(identity_settings());
     five.compensation_minima = 5;
     Preprocessor pre5(five);
     ASSERT_TRUE(pre5.process(bgr_view(first)));

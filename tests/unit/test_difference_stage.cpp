@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // The difference stage on its own (paper 4.1): two drawn working images with a brightness
-// jump and a moving square, against sums computed pixel by pixel here.
+// jump and a moving square, against sums computed pixel by pixel here; and the compensation by
+// band of rows on mains flicker's bands.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <vector>
 
@@ -15,9 +17,11 @@
 namespace raypoint::core {
 namespace {
 
-PreprocessSettings difference_settings(EdgeSource movement_source) {
+PreprocessSettings difference_settings(EdgeSource movement_source,
+                                       Compensation compensation = Compensation::frame) {
     PreprocessSettings settings;  // 160x120 working images, 10 minima
     settings.movement_source = movement_source;
+    settings.compensation = compensation;
     return settings;
 }
 
@@ -113,6 +117,82 @@ TEST(DifferenceStage, ResetClearsTheImageTheMovementAndTheOffset) {
     EXPECT_EQ(stage.movement(), 0.0);
     EXPECT_EQ(stage.brightness_offset_applied(), 0);
     EXPECT_EQ(cv::countNonZero(stage.difference()), 0);
+}
+
+// Mains flicker through a rolling shutter: each row's light changes by its own factor between
+// two frames (here 0.8 to 1.2 along a sine over the rows), on a textured still scene, while a
+// square moves. The paper's single offset leaves the bands; the compensation by band of rows
+// leaves the square alone.
+cv::Mat textured(double (*gain)(int row), cv::Rect square) {
+    cv::Mat image(120, 160, CV_8U);
+    for (int y = 0; y < 120; ++y) {
+        for (int x = 0; x < 160; ++x) {
+            const double texture = 90 + 60 * ((x / 8 + y / 6) % 3) + (x * 7 + y * 3) % 11;
+            image.at<std::uint8_t>(y, x) = cv::saturate_cast<std::uint8_t>(texture * gain(y));
+        }
+    }
+    image(square).setTo(cv::Scalar(30));
+    return image;
+}
+
+double unlit(int) {
+    return 1.0;
+}
+
+double banded(int row) {
+    return 1.0 + 0.2 * std::sin(2 * CV_PI * row / 48.0);
+}
+
+int band_pixels(const cv::Mat& difference, cv::Rect leave_out, int over) {
+    int count = 0;
+    for (int y = 0; y < difference.rows; ++y) {
+        for (int x = 0; x < difference.cols; ++x) {
+            if (!leave_out.contains({x, y}) && difference.at<std::uint8_t>(y, x) > over) ++count;
+        }
+    }
+    return count;
+}
+
+TEST(DifferenceStage, RowCompensationRemovesFlickerBandsAndKeepsTheMovingSquare) {
+    const cv::Rect before_square(20, 50, 16, 16);
+    const cv::Rect after_square(28, 50, 16, 16);
+    const cv::Mat before = textured(unlit, before_square);
+    const cv::Mat after = textured(banded, after_square);
+    const cv::Rect moved = before_square | after_square;
+    DifferenceStage paper(difference_settings(EdgeSource::max_channel));
+    paper.compute(after, before, as_colour(after), as_colour(before));
+    DifferenceStage rows(difference_settings(EdgeSource::max_channel, Compensation::rows));
+    rows.compute(after, before, as_colour(after), as_colour(before));
+    // The paper's offset is the smallest differences' (the rows where the gain is near 1), so
+    // most of the frame stays in the difference image; by band of rows, within a few levels.
+    EXPECT_GT(band_pixels(paper.difference(), moved, 8), 160 * 120 / 3);
+    EXPECT_LT(band_pixels(rows.difference(), moved, 8), 160 * 120 / 100);
+    EXPECT_LT(rows.movement(), paper.movement() / 10);
+    // The square's arrival (30 over a background of 90..250) stays strong.
+    EXPECT_GT(rows.difference().at<std::uint8_t>(58, 40), 40);
+    // The previous colour image in this frame's light: a still pixel's colour is kept.
+    ASSERT_TRUE(rows.relit());
+    EXPECT_FALSE(paper.relit());
+    for (const cv::Point at : {cv::Point(100, 12), cv::Point(140, 36), cv::Point(80, 100)}) {
+        const int now = after.at<std::uint8_t>(at);
+        const cv::Vec3b relit = rows.previous_color_relit().at<cv::Vec3b>(at);
+        EXPECT_NEAR(relit[0], now, 3) << at;
+        EXPECT_NEAR(relit[2], now, 3) << at;
+    }
+    rows.reset();
+    EXPECT_FALSE(rows.relit());
+}
+
+// Without a light change the compensation by rows is the paper's: the same image, bit for bit.
+TEST(DifferenceStage, RowCompensationWithoutALightChangeIsThePapers) {
+    const cv::Mat before = textured(unlit, cv::Rect(20, 50, 16, 16));
+    const cv::Mat after = textured(unlit, cv::Rect(40, 60, 16, 16));
+    DifferenceStage paper(difference_settings(EdgeSource::max_channel));
+    paper.compute(after, before, as_colour(after), as_colour(before));
+    DifferenceStage rows(difference_settings(EdgeSource::max_channel, Compensation::rows));
+    rows.compute(after, before, as_colour(after), as_colour(before));
+    EXPECT_EQ(cv::norm(paper.difference(), rows.difference(), cv::NORM_INF), 0.0);
+    EXPECT_EQ(paper.movement(), rows.movement());
 }
 
 }  // namespace

@@ -12,5 +12,7 @@ namespace raypoint::scene {
 // CV_32FC3, BGR grey levels 0..255 at full light.
 cv::Mat make_plain_board(cv::Size size, std::uint64_t seed);
 cv::Mat make_room(cv::Size size, std::uint64_t seed);
+cv::Mat make_skin_wall(cv::Size size, std::uint64_t seed);  // surfaces.cpp
+cv::Mat make_desk(cv::Size size, std::uint64_t seed);
 
 }  // namespace raypoint::scene

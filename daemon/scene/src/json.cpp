@@ -53,6 +53,24 @@ std::string truth_json(const Truth& truth) {
     return s + "}";
 }
 
+namespace {
+
+const char* background_name(Background background) {
+    switch (background) {
+        case Background::plain:
+            return "white";
+        case Background::cluttered:
+            return "clutter";
+        case Background::skin_wall:
+            return "skin_wall";
+        case Background::desk:
+            return "desk";
+    }
+    return "white";
+}
+
+}  // namespace
+
 std::string scene_json(const SceneSpec& spec, int frames) {
     std::vector<double> hold_starts;
     std::vector<double> hold_seconds;
@@ -68,7 +86,9 @@ std::string scene_json(const SceneSpec& spec, int frames) {
     field("width", std::to_string(spec.width));
     field("height", std::to_string(spec.height));
     field("frames", std::to_string(frames));
-    field("bg", quoted(spec.background == Background::plain ? "white" : "clutter"));
+    field("bg", quoted(background_name(spec.background)));
+    field("sleeve", spec.sleeve_colour ? "true" : "false");
+    field("person", spec.person ? "true" : "false");
     field("obj", quoted(spec.target == Target::sphere ? "sphere" : "hand"));
     field("fps", number(spec.fps, 6));
     field("noise", number(spec.noise_sigma, 6));

@@ -20,11 +20,14 @@ std::array<cv::Point2d, 4> Placement::corners() const {
     const std::array<cv::Point2d, 4> local{
         {{e.x, e.y}, {e.x + e.width, e.y}, {e.x, e.y + e.height}, {e.x + e.width, e.y + e.height}}};
     std::array<cv::Point2d, 4> out{};
-    for (std::size_t i = 0; i < local.size(); ++i) {
-        const cv::Point2d p = local[i] * px_per_unit_;
-        out[i] = centre_ + cv::Point2d(cos_ * p.x - sin_ * p.y, sin_ * p.x + cos_ * p.y);
-    }
+    for (std::size_t i = 0; i < local.size(); ++i)
+        out[i] = to_frame(local[i]);
     return out;
+}
+
+cv::Point2d Placement::to_frame(cv::Point2d units) const {
+    const cv::Point2d p = units * px_per_unit_;
+    return centre_ + cv::Point2d(cos_ * p.x - sin_ * p.y, sin_ * p.x + cos_ * p.y);
 }
 
 cv::Rect Placement::bounds() const {

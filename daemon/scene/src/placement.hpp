@@ -30,6 +30,13 @@ class Placement {
     // CV_32FC3 over roi: the sprite's colour at full light.
     cv::Mat colour(cv::Rect roi) const;
 
+    // A point in the sprite's units (y down the target) on the frame (continuous pixels), the
+    // frame direction of the sprite's +y, and the pixels a unit spans.
+    cv::Point2d to_frame(cv::Point2d units) const;
+    cv::Point2d down() const { return {-sin_, cos_}; }
+    double px_per_unit() const { return px_per_unit_; }
+    const Sprite& sprite() const { return sprite_; }
+
   private:
     cv::Mat sample(const cv::Mat& texture, cv::Rect roi, int border, double border_value) const;
 

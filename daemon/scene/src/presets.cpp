@@ -127,6 +127,31 @@ SceneSpec button_gesture(std::string_view name, std::uint32_t seed) {
                     {11, 0.5, 0.35, far}});
 }
 
+// A skin hand where something near its colour is behind or beside it, as realworld's camera
+// sees it (noise 3, half-frame blur, 0.9 x speed).
+SceneSpec skin_lookalike(std::string_view name, std::uint32_t seed) {
+    SceneSpec s = base(name, Target::hand, Background::cluttered, seed);
+    s.noise_sigma = 3;
+    s.blur = 0.5;
+    s.speed = 0.9;
+    if (name == "person") {
+        // The user behind their own hand: face and neck of the hand's skin, breathing and
+        // turning the head, in front of a room.
+        s.person = true;
+    } else if (name == "skinwall") {
+        s.background = Background::skin_wall;
+    } else if (name == "desk") {
+        s.background = Background::desk;
+    } else if (name == "sleeve") {
+        // A beige knit sleeve: 12-24 grey levels from the skin in each channel, about the edge
+        // threshold's step.
+        s.sleeve_colour = Colour{112, 146, 190};
+    } else {
+        return {};
+    }
+    return s;
+}
+
 SceneSpec make(std::string_view name, std::uint32_t seed) {
     if (name == "ideal") return base(name, Target::sphere, Background::plain, seed);
     if (name == "lowlight") {
@@ -247,13 +272,14 @@ SceneSpec make(std::string_view name, std::uint32_t seed) {
         s.readout_seconds = 0.030;
         return s;
     }
-    return {};
+    return skin_lookalike(name, seed);
 }
 
-constexpr std::array<std::string_view, 20> names{
-    "ideal",   "lowlight", "interfering", "nonconvex",   "realworld", "hd60",  "exposure",
-    "jpeg",    "fast",     "pause",       "push",        "rightdown", "click", "drag",
-    "flicker", "drift",    "rightclick",  "doubleclick", "scroll",    "skew"};
+constexpr std::array<std::string_view, 24> names{
+    "ideal",    "lowlight", "interfering", "nonconvex", "realworld",  "hd60",
+    "exposure", "jpeg",     "fast",        "pause",     "push",       "rightdown",
+    "click",    "drag",     "flicker",     "drift",     "rightclick", "doubleclick",
+    "scroll",   "skew",     "person",      "skinwall",  "desk",       "sleeve"};
 
 }  // namespace
 

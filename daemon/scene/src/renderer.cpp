@@ -13,9 +13,11 @@
 #include "background.hpp"
 #include "camera.hpp"
 #include "measure.hpp"
+#include "person.hpp"
 #include "photometry.hpp"
 #include "placement.hpp"
 #include "rng.hpp"
+#include "sleeve.hpp"
 #include "sprite.hpp"
 #include "trajectory.hpp"
 
@@ -28,6 +30,7 @@ struct Renderer::Assets {
     cv::Mat vignette;    // CV_32F
     cv::Mat background;  // CV_32FC3, vignetted, at full light
     NoisePool noise;
+    std::optional<Person> person;
 
     explicit Assets(const SceneSpec& spec)
         : camera{spec.width, spec.height},
@@ -45,10 +48,21 @@ struct Renderer::Assets {
             case Background::cluttered:
                 background = make_room(size, seed);
                 break;
+            case Background::skin_wall:
+                background = make_skin_wall(size, seed);
+                break;
+            case Background::desk:
+                background = make_desk(size, seed);
+                break;
         }
         cv::Mat vignette3;
         cv::merge(std::vector<cv::Mat>{vignette, vignette, vignette}, vignette3);
         background = background.mul(vignette3);
+        if (spec.person) {
+            person.emplace(
+                size, spec.target_colour.value_or(default_colour(Target::hand, spec.background)),
+                mix_seed(spec.seed, 11));
+        }
     }
 };
 
@@ -165,26 +179,36 @@ std::vector<RowBand> row_bands(const Renderer::Assets& a, const SceneSpec& spec,
     return bands;
 }
 
-// CV_32FC3 light over roi (full light, vignetted): the background with the target blended
-// in by its coverage averaged over the sub-frames. One colour sample serves the whole
-// exposure: shading barely moves within it.
-cv::Mat composite(const Renderer::Assets& a, cv::Rect roi, const SubFrames& subs,
-                  const Placement& colour_from) {
-    cv::Mat coverage = cv::Mat::zeros(roi.size(), CV_32F);
-    for (const Placement& p : subs.placements) {
-        p.add_coverage(roi, 1.0f / static_cast<float>(subs.count), coverage);
-    }
-    const cv::Mat colour = colour_from.colour(roi);
-    cv::Mat light = a.background(roi).clone();
-    for (int y = 0; y < roi.height; ++y) {
-        const auto* c = coverage.ptr<float>(y);
-        const auto* col = colour.ptr<cv::Vec3f>(y);
-        const auto* v = a.vignette.ptr<float>(roi.y + y) + roi.x;
-        auto* px = light.ptr<cv::Vec3f>(y);
-        for (int x = 0; x < roi.width; ++x) {
-            if (c[x] > 0) px[x] += c[x] * (col[x] * v[x] - px[x]);
+// CV_32FC3 light over roi (full light, vignetted): the background with the sleeve, then the
+// target, blended in by their coverage averaged over the sub-frames. One colour sample serves
+// the whole exposure: shading barely moves within it.
+cv::Mat composite(const Renderer::Assets& a, const SceneSpec& spec, const cv::Mat& background,
+                  cv::Rect roi, const SubFrames& subs, const Placement& colour_from) {
+    cv::Mat light = background(roi).clone();
+    cv::Mat coverage(roi.size(), CV_32F);
+    const auto blend = [&](const cv::Mat& colour) {
+        for (int y = 0; y < roi.height; ++y) {
+            const auto* c = coverage.ptr<float>(y);
+            const auto* col = colour.ptr<cv::Vec3f>(y);
+            const auto* v = a.vignette.ptr<float>(roi.y + y) + roi.x;
+            auto* px = light.ptr<cv::Vec3f>(y);
+            for (int x = 0; x < roi.width; ++x) {
+                if (c[x] > 0) px[x] += c[x] * (col[x] * v[x] - px[x]);
+            }
         }
+    };
+    const float weight = 1.0f / static_cast<float>(subs.count);
+    if (spec.sleeve_colour && a.sprite->wrist_radius > 0) {
+        const cv::Size frame(spec.width, spec.height);
+        coverage.setTo(0);
+        for (const Placement& p : subs.placements)
+            Sleeve(p, frame).add_coverage(roi, weight, coverage);
+        blend(Sleeve(colour_from, frame).colour(roi, *spec.sleeve_colour));
     }
+    coverage.setTo(0);
+    for (const Placement& p : subs.placements)
+        p.add_coverage(roi, weight, coverage);
+    blend(colour_from.colour(roi));
     return light;
 }
 
@@ -206,15 +230,15 @@ void apply_camera_light(const SceneSpec& spec, double t, int top, cv::Mat& light
 
 // The sensor: exposure gain on the light plus noise, rounded and clipped to 8 bits, in bands
 // of rows so that no frame-sized float buffer is needed. target (over roi) may be empty.
-cv::Mat expose(const Renderer::Assets& a, const SceneSpec& spec, int index, const cv::Mat& target,
-               cv::Rect roi) {
+cv::Mat expose(const Renderer::Assets& a, const SceneSpec& spec, int index,
+               const cv::Mat& background, const cv::Mat& target, cv::Rect roi) {
     const double gain = exposure_gain(spec, index / spec.fps);
     const cv::Mat noise = a.noise.empty() ? cv::Mat() : a.noise.frame_noise(index);
     cv::Mat bgr(spec.height, spec.width, CV_8UC3);
     cv::Mat light;
     for (int top = 0; top < spec.height; top += sensor_band_rows) {
         const cv::Rect band(0, top, spec.width, std::min(sensor_band_rows, spec.height - top));
-        a.background(band).copyTo(light);
+        background(band).copyTo(light);
         const cv::Rect overlap = band & roi;
         if (!target.empty() && !overlap.empty()) {
             cv::Mat part = light(overlap - band.tl());
@@ -266,13 +290,22 @@ RenderedFrame Renderer::render(int index) const {
     const double t = frame_time(index);
     const std::vector<RowBand> bands = row_bands(a, spec_, t);
 
+    const bool sleeve = spec_.sleeve_colour && a.sprite->wrist_radius > 0;
     cv::Rect roi;
     for (const RowBand& band : bands) {
-        for (const Placement& p : band.subs.placements)
+        for (const Placement& p : band.subs.placements) {
             roi |= p.bounds() & band.rows;
+            if (sleeve) roi |= Sleeve(p, frame_rect.size()).bounds() & band.rows;
+        }
         if (band.mid) roi |= band.mid->bounds() & band.rows;
     }
     roi &= frame_rect;
+    // The person behind the target moves: this frame's background.
+    cv::Mat background = a.background;
+    if (a.person) {
+        background = a.background.clone();
+        a.person->draw(t, a.vignette, background);
+    }
 
     RenderedFrame out;
     out.mask = cv::Mat::zeros(spec_.height, spec_.width, CV_8U);
@@ -283,15 +316,16 @@ RenderedFrame Renderer::render(int index) const {
             const cv::Rect part = roi & band.rows;
             if (part.empty()) continue;
             if (band.subs.placements.empty()) {
-                a.background(part).copyTo(target(part - roi.tl()));
+                background(part).copyTo(target(part - roi.tl()));
             } else {
-                composite(a, part, band.subs, band.mid ? *band.mid : band.subs.placements.back())
+                composite(a, spec_, background, part, band.subs,
+                          band.mid ? *band.mid : band.subs.placements.back())
                     .copyTo(target(part - roi.tl()));
             }
             if (band.mid) band.mid->mask(part).copyTo(out.mask(part));
         }
     }
-    out.bgr = expose(a, spec_, index, target, roi);
+    out.bgr = expose(a, spec_, index, background, target, roi);
     out.truth = measure_mask(out.mask(roi), roi.tl(), frame_rect.size());
     out.truth.frame = index;
     out.truth.t = t;

@@ -365,16 +365,7 @@ cv::Mat make_room(cv::Size size, std::uint64_t seed) {
     canvas.convertTo(room, CV_32FC3);
     // A ceiling light somewhere above: the room is brighter around it, darker in far corners.
     Rng rng(mix_seed(seed, 7));
-    const double lx = rng.uniform(0.2, 0.8) * size.width;
-    const double ly = rng.uniform(-0.3, 0.2) * size.height;
-    const double reach = size.height * 1.2;
-    for (int y = 0; y < size.height; ++y) {
-        auto* row = room.ptr<cv::Vec3f>(y);
-        for (int x = 0; x < size.width; ++x) {
-            const double d2 = ((x - lx) * (x - lx) + (y - ly) * (y - ly)) / (reach * reach);
-            row[x] *= static_cast<float>(0.8 + 0.3 * std::exp(-d2));
-        }
-    }
+    paint::ceiling_light(room, rng, 0.8, 0.3);
     // The lens is not perfectly sharp.
     cv::GaussianBlur(room, room, cv::Size(), 0.7 * size.height / 480.0);
     return room;

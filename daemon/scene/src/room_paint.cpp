@@ -156,6 +156,19 @@ void surface(cv::Mat& canvas, cv::Rect rect, const cv::Scalar& colour, Texture t
         cv::rectangle(area, cv::Rect(0, 0, area.cols, area.rows), scaled(colour, 0.45), edge);
 }
 
+void ceiling_light(cv::Mat& light, Rng& rng, double base, double boost) {
+    const double lx = rng.uniform(0.2, 0.8) * light.cols;
+    const double ly = rng.uniform(-0.3, 0.2) * light.rows;
+    const double reach = light.rows * 1.2;
+    for (int y = 0; y < light.rows; ++y) {
+        auto* row = light.ptr<cv::Vec3f>(y);
+        for (int x = 0; x < light.cols; ++x) {
+            const double d2 = ((x - lx) * (x - lx) + (y - ly) * (y - ly)) / (reach * reach);
+            row[x] *= static_cast<float>(base + boost * std::exp(-d2));
+        }
+    }
+}
+
 void blob(cv::Mat& canvas, cv::Point centre, cv::Size axes, const cv::Scalar& colour) {
     cv::ellipse(canvas, centre, axes, 0, 0, 360, colour, cv::FILLED, cv::LINE_AA);
     const cv::Point lit(centre.x - axes.width / 5, centre.y - axes.height / 5);

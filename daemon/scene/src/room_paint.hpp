@@ -25,6 +25,10 @@ Texture any_texture(Rng& rng);
 void surface(cv::Mat& canvas, cv::Rect rect, const cv::Scalar& colour, Texture texture, Rng& rng,
              int edge);
 
+// A ceiling lamp somewhere above the frame on a CV_32FC3 image: each pixel times
+// base + boost x exp(-d^2 / reach^2), d its distance from the lamp, reach 1.2 frame heights.
+void ceiling_light(cv::Mat& light, Rng& rng, double base, double boost);
+
 // A filled ellipse, anti-aliased, with a lighter upper left as if lit from above.
 void blob(cv::Mat& canvas, cv::Point centre, cv::Size axes, const cv::Scalar& colour);
 

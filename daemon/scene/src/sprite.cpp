@@ -172,6 +172,8 @@ Sprite make_hand(const Colour& colour) {
     const cv::Rect2d extent((b.x - centre.x) / unit, (b.y - centre.y) / unit, b.width / unit, 1);
     Sprite s = sample(extent, distance, shade);
     s.rotates = true;
+    s.wrist = (raw.wrist.b - centre) / unit;
+    s.wrist_radius = raw.wrist.radius / unit;
     return s;
 }
 

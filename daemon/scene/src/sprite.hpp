@@ -22,6 +22,10 @@ struct Sprite {
     cv::Rect2d extent;   // the outline's bounding box in units
     double area = 0;     // the outline's area in square units
     bool rotates = false;
+    // The hand's wrist: the centre of its lower end and its half width, in units (0 for the
+    // sphere). A forearm continues from there along +y.
+    cv::Point2d wrist;
+    double wrist_radius = 0;
 };
 
 Sprite make_sprite(Target target, const Colour& colour);

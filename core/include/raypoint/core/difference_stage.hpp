@@ -38,15 +38,33 @@ class DifferenceStage {
     // the grey difference or the per-channel one (PreprocessSettings::movement_source).
     double movement() const noexcept { return movement_; }
     int brightness_offset_applied() const noexcept { return offset_; }
+    // Compensation::rows, after a compute() that kept the relit difference: the previous colour
+    // image in the current frame's light (CV_8UC3, each row times its band's light ratio), what
+    // the current frame would show of a still scene. relit() is false otherwise (always under
+    // Compensation::frame, and after reset()).
+    bool relit() const noexcept { return relit_current_; }
+    const cv::Mat& previous_color_relit() const noexcept { return relit_; }
 
   private:
+    bool estimate_row_gains(const cv::Mat& grey, const cv::Mat& previous_grey) noexcept;
+
     bool channels_;  // the movement value from the largest per-channel difference
+    bool rows_;      // Compensation::rows: each band of rows' light ratio divided out first
     int minima_;
     cv::Mat difference_;
     std::vector<std::uint8_t> channel_row_;  // a row of channel differences, then their maxima
     // Histograms of the grey and the per-channel difference, four interleaved partial ones each.
     std::array<std::array<int, 256>, 4> grey_bins_{};
     std::array<std::array<int, 256>, 4> channel_bins_{};
+    // Compensation::rows: each band's and each row's light ratio, current / previous, in 1/256,
+    // and 2^24 / value, which turns the ratio's division into a multiplication.
+    std::vector<int> band_gains_;
+    std::vector<int> row_gains_;
+    std::array<std::uint32_t, 256> reciprocal_{};
+    std::vector<std::uint8_t> grey_row_;  // a row of the previous grey image, relit
+    cv::Mat relit_;
+    cv::Mat relit_difference_;  // the grey difference with the previous image relit
+    bool relit_current_ = false;
     double movement_ = 0.0;
     int offset_ = 0;
 };

@@ -52,7 +52,12 @@ class Preprocessor {
     }
 
     const cv::Mat& color() const noexcept { return filter_.color(); }  // CV_8UC3
-    const cv::Mat& previous_color() const noexcept { return filter_.previous_color(); }
+    // The previous frame's colour image; under Compensation::rows in this frame's light
+    // (DifferenceStage::previous_color_relit()), so that the colour validation's comparison of
+    // the two frames does not see mains flicker's bands as a change of colour.
+    const cv::Mat& previous_color() const noexcept {
+        return difference_.relit() ? difference_.previous_color_relit() : filter_.previous_color();
+    }
     const cv::Mat& gray() const noexcept { return filter_.gray(); }  // CV_8U
     // The edge images are the last filtered frame's only when edges_current().
     const cv::Mat& magnitude() const noexcept { return edges_.magnitude(); }

@@ -13,6 +13,11 @@ enum class EdgeSource {
     max_channel,  // strongest of the per-channel Sobel magnitudes: keeps colour-only contrast
 };
 
+enum class Compensation {
+    frame,  // one offset for the whole difference image (paper 4.1)
+    rows,   // each band of rows' light change divided out first: mains flicker's rolling bands
+};
+
 enum class SearchWeighting {
     all,     // centre of mass over every pixel of the difference image (paper 4.2)
     strong,  // only pixels at or above a fraction of the strongest difference
@@ -50,6 +55,11 @@ struct PreprocessSettings {
     // difference, which sees a skin hand move over a wall of the same brightness. The difference
     // image whose centre of mass picks the target stays the grey one either way.
     EdgeSource movement_source = EdgeSource::max_channel;
+    // Under mains flicker a rolling shutter reads each band of rows at another phase of the
+    // light, so the light changes by band between frames, not by frame: `rows` brings each band
+    // of the previous frame to the current one's light before the difference (the paper's
+    // offset follows either way).
+    Compensation compensation = Compensation::rows;
 };
 
 struct EstimatorSettings {

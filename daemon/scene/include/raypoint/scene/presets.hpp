@@ -12,6 +12,10 @@
 //   fast         paper hand, 15 fps, 2.4x speed, exposure over the whole frame interval
 //   pause        skin hand in a cluttered room that holds still for 3.5 s mid-clip (10 s)
 //   push         paper hand that moves, holds, and pushes toward the camera twice (9 s)
+//   person       skin hand in front of a person (face, neck, shirt) who breathes and turns
+//   skinwall     skin hand against a warm beige or pink wall
+//   desk         skin hand over a wooden desk seen from above
+//   sleeve       skin hand on a forearm in a sleeve of nearly its colour (truth: the hand)
 
 #include <string>
 #include <string_view>

@@ -18,6 +18,8 @@ enum class Target {
 enum class Background {
     plain,      // a slightly uneven white board
     cluttered,  // a procedural room (shelves, furniture, posters, textures), fixed by the seed
+    skin_wall,  // a wall painted warm beige or pink, near a skin's colour, with a few things on it
+    desk,       // a wooden desk seen from above: planks, soft grain, warm tones, a few things
 };
 
 // A point of an explicit path. x, y: the target's centre as fractions of the frame's width and
@@ -107,6 +109,14 @@ struct SceneSpec {
     // Empty: a matte black sphere; a blue paper hand on the plain board; a skin-coloured
     // hand in the cluttered room.
     std::optional<Colour> target_colour;
+    // The hand's forearm in a sleeve of this colour, from the wrist along the hand's axis out of
+    // the frame. Drawn behind the hand and moving with it; not part of the truth (a pointer
+    // follows the hand). Empty: no arm.
+    std::optional<Colour> sleeve_colour;
+    // A person sitting behind the target (head, neck, shoulders, shirt), skin of the target's
+    // colour family, breathing and turning the head a little as a person at a desk does; part
+    // of the background, not of the truth.
+    bool person = false;
     std::uint32_t seed = 1;  // background layout, default trajectory and noise
 };
 
