@@ -60,8 +60,10 @@ class ClickMachine {
     // the frame that picks a target). ready: tracked for min_tracking_seconds (PointerController
     // decides). Losing the target while the button is down releases it. where: the smoothed
     // position in frame widths on both axes (y down), read by HOLDING and SCROLLING only.
+    // late: the scale's change on this frame happened on the previous one (the depth signal
+    // gave back a step it had held for a frame), so push_seconds counts to that frame.
     ClickStep step(Timestamp timestamp, std::optional<double> scale, bool ready,
-                   cv::Point2d where = {}) noexcept;
+                   cv::Point2d where = {}, bool late = false) noexcept;
 
     // Pause, exit, signal: back to inactive. True when a button was down and must be released.
     bool release_all() noexcept;
@@ -84,9 +86,6 @@ class ClickMachine {
 
     void confirm() noexcept;  // RISING's push reached the press: PRESSED or HOLDING
     void press_left() noexcept;
-    double creep_speed() const noexcept;
-    void creep(cv::Point2d& anchor,
-               double step) const noexcept;  // with double_click when it follows a click in time
 
     void follow_baseline() noexcept;
     double seconds_since(Timestamp then) const noexcept;
@@ -101,6 +100,9 @@ class ClickMachine {
     double rise_ = 0.0;
     Timestamp last_frame_ = 0;  // the previous frame with a target
     Timestamp push_began_ = 0;
+    cv::Point2d push_from_;  // where the push began: the position of the frame before RISING
+    cv::Point2d last_where_;
+    double push_peak_ = 0.0;  // RISING: the largest scale since the push began
     Timestamp pressed_at_ = 0;
     Timestamp released_at_ = 0;
     // Since when the rise has been at press_rise (RISING) or at release_rise (PRESSED,
@@ -122,6 +124,7 @@ class ClickMachine {
     Timestamp now_ = 0;
     double scale_ = 0.0;
     bool ready_ = false;
+    bool late_ = false;
     cv::Point2d where_;
     ClickStep result_;
 };
