@@ -3,9 +3,9 @@
 // Click by depth: pushing the target toward the camera presses the left button, pulling it back
 // releases it. Optionally ([click]): a push held still is a right click, two quick pushes a
 // double click, a push held while moving up or down scrolls. A state machine, one handler a state;
-// docs/pointer.md draws it and must change with it. Input is the target's scale, sqrt(area): the
-// raw estimate, not the smoothed z, whose once-a-frame average peaks 0.2 s after a push does
-// (docs/pointer.md). Frame time only.
+// docs/pointer.md draws it and must change with it. Input is the target's scale, sqrt(area) of
+// each frame through the depth signal (depth_signal.hpp), not the smoothed z, whose
+// once-a-frame average peaks 0.2 s after a push does (docs/pointer.md). Frame time only.
 
 #include <optional>
 #include <string_view>
@@ -18,10 +18,12 @@
 namespace raypoint::core {
 
 enum class ClickState {
-    inactive,    // no target, or tracked for less than min_tracking_seconds: never pressed
-    idle,        // the scale is near its baseline, which follows it
-    rising,      // the rise left start_rise: a push may be under way; the baseline is held
-    drifting,    // it rose too slowly to be a push: no press until it is back near the baseline
+    inactive,  // no target, or tracked for less than min_tracking_seconds: never pressed
+    idle,      // the scale is near its baseline, which follows it
+    rising,    // the rise left start_rise: a push may be under way; the baseline is held
+    // it rose too slowly, was carried sideways or fell back: not a push; no press until it is
+    // back near the baseline
+    drifting,
     pressed,     // the button is down, x and y are frozen; the baseline is held
     dragging,    // held pushed past drag_seconds: the button stays down, x and y move
     refractory,  // just released: no press for refractory_seconds nor before the rise settles
