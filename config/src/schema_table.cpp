@@ -272,6 +272,27 @@ const std::vector<Key>& schema() {
             "down (0.25 = 25%; 0 = off): a drag that changed the size still releases",
             [](auto& c) -> auto& { return c.core.pointer.click.release_drop; }),
         real_key(
+            "click", "glitch_step", 0.0, 5.0,
+            "a one-frame change of sqrt(area) this large (relative) that comes with a "
+            "centroid jump of glitch_jump is the tracker's region changing: taken out of the "
+            "depth signal",
+            [](auto& c) -> auto& { return c.core.pointer.click.glitch_step; }),
+        real_key(
+            "click", "glitch_jump", 0.0, 10.0,
+            "the centroid's one-frame jump, in units of the target's size, that marks a step "
+            "of glitch_step as the region changing (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.glitch_jump; }),
+        real_key(
+            "click", "push_travel", 0.0, 10.0,
+            "while a push rises, the position may move this many times the target's size; "
+            "farther it is an approach while moving, not a push (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.push_travel; }),
+        real_key(
+            "click", "push_dip", 0.0, 1.0,
+            "while a push rises, sqrt(area) may fall this far (relative) under its largest "
+            "since the push began; farther it is a wobble, not a push (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.push_dip; }),
+        real_key(
             "click", "refractory_seconds", 0.0, 10.0,
             "seconds after a release during which no press can come",
             [](auto& c) -> auto& { return c.core.pointer.click.refractory_seconds; }),

@@ -44,9 +44,10 @@ bool ClickMachine::release_all() noexcept {
 }
 
 ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, bool ready,
-                             cv::Point2d where) noexcept {
+                             cv::Point2d where, bool late) noexcept {
     now_ = timestamp;
     where_ = where;
+    late_ = late;
     result_ = ClickStep{};
     if (!scale || !(*scale > 0.0) || !ready) {
         // Whatever the state, the button comes up: nothing may stay pressed without a target
@@ -99,6 +100,7 @@ ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, b
             break;
     }
     last_frame_ = now_;
+    last_where_ = where_;
     result_.state = state_;
     return result_;
 }
@@ -193,6 +195,8 @@ void ClickMachine::on_inactive() noexcept {
 void ClickMachine::on_idle() noexcept {
     if (rise_ > settings_.start_rise) {
         push_began_ = last_frame_;
+        push_from_ = last_where_;
+        push_peak_ = 0.0;
         held_since_.reset();
         state_ = ClickState::rising;
         on_rising();  // a low frame rate may bring the whole push in one frame
@@ -202,11 +206,25 @@ void ClickMachine::on_idle() noexcept {
 }
 
 void ClickMachine::on_rising() noexcept {
-    const bool in_time = seconds_since(push_began_) <= settings_.push_seconds;
+    // A rise the depth signal held back for a frame counts from that frame.
+    const Timestamp rose_at = late_ ? last_frame_ : now_;
+    const bool in_time = static_cast<double>(rose_at - push_began_) / 1e6 <= settings_.push_seconds;
     // The rise must reach press_rise within push_seconds; holding it there may take longer.
     const bool high = rise_ >= settings_.press_rise && (in_time || held_since_);
+    // A push brings the target closer where it is; an approach while moving sideways (the
+    // hand wandering, walking in at an angle) carries it along.
+    const bool carried = settings_.push_travel > 0.0 &&
+                         cv::norm(where_ - push_from_) > settings_.push_travel * baseline_;
+    // A push grows frame after frame; the bob of a step or a wobble goes up and down.
+    push_peak_ = std::max(push_peak_, scale_);
+    const bool dipped =
+        settings_.push_dip > 0.0 && scale_ < push_peak_ * (1.0 - settings_.push_dip);
     if (rise_ <= settings_.start_rise) {
         state_ = ClickState::idle;
+        held_since_.reset();
+        follow_baseline();
+    } else if (carried || dipped) {
+        state_ = ClickState::drifting;
         held_since_.reset();
         follow_baseline();
     } else if (held(high)) {

@@ -20,6 +20,7 @@ PointerController::PointerController(const PointerSettings& settings, double fra
     : settings_(settings),
       frame_aspect_(frame_aspect > 0.0 ? frame_aspect : 4.0 / 3.0),
       mapper_(settings.motion, frame_aspect_),
+      depth_(settings.click),
       clicker_(settings.click),
       dweller_(settings.dwell) {}
 
@@ -38,6 +39,7 @@ void PointerController::release_down(PointerCommand& command) noexcept {
 PointerCommand PointerController::release_all() noexcept {
     PointerCommand command;
     clicker_.release_all();
+    depth_.reset();
     dweller_.reset();
     mapper_.reset();
     tracking_since_.reset();
@@ -65,11 +67,12 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
     PointerCommand command;
     switch (settings_.click.mode) {
         case ClickMode::depth: {
-            const std::optional<double> scale =
-                has_target ? std::optional<double>(std::sqrt(*frame.area)) : std::nullopt;
             // Frame widths on both axes, as the hold radius is.
             const cv::Point2d where(position.x, position.y / frame_aspect_);
-            const ClickStep step = clicker_.step(now, scale, ready, where);
+            const std::optional<double> scale = depth_.update(
+                has_target ? std::optional<double>(std::sqrt(*frame.area)) : std::nullopt,
+                cv::Point2d(frame.centroid.x, frame.centroid.y / frame_aspect_));
+            const ClickStep step = clicker_.step(now, scale, ready, where, depth_.given_back());
             // x and y stay where the push began while a button is down or may yet be, and on
             // the frame a held push starts a drag, whose press goes where the push began.
             const bool hold = step.press || step.state == ClickState::pressed ||

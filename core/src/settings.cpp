@@ -28,6 +28,9 @@ Settings paper_settings() {
     click.push_seconds = 0.25;
     click.press_hold_seconds = 0.0;
     click.release_drop = 0.0;
+    click.glitch_jump = 0.0;
+    click.push_travel = 0.0;
+    click.push_dip = 0.0;
     click.refractory_seconds = 0.3;
     click.drag_seconds = 0.8;
     click.baseline_seconds = 1.0;

@@ -125,19 +125,27 @@ void progress(int done, int total) {
     std::fflush(stderr);
 }
 
-// What the pointer reads of a frame's result, in the host's byte order.
+// What the pointer reads of a frame's result, in the host's byte order. The file's suffix
+// changes with this layout, so a cache of another layout is never misread.
 struct CachedResult {
     core::Timestamp timestamp;
     std::int32_t state;
-    std::int32_t has_position;
-    double x, y;
-    double area;  // < 0: none
+    std::int32_t flags;  // 1: has_position, 2: has_target, 4: recovered, 8: lost
+    double x, y;         // smoothed position
+    double area;         // < 0: none
+    double centroid_x, centroid_y;
+    double inner_x, inner_y;
+    double movement;
 };
+constexpr const char* cache_suffix = ".results2";
 
 TrackedClip cached_track(const scene::GestureClip& clip, const core::Settings& settings,
-                         const std::string& dir) {
+                         const std::string& dir, const std::string& set, std::uint32_t seed) {
     if (dir.empty()) return track_rendered(clip, settings);
-    const std::string path = dir + "/" + clip.spec.name + ".results";
+    // The clips' names repeat from set to set and seed to seed (the ci set's lean-0 is not the
+    // full set's): each set and seed has its own folder.
+    const std::string folder = dir + "/" + set + "-seed-" + std::to_string(seed);
+    const std::string path = folder + "/" + clip.spec.name + cache_suffix;
     std::ifstream in(path, std::ios::binary);
     if (in) {
         TrackedClip tracked = track_rendered_truth(clip);
@@ -146,26 +154,38 @@ TrackedClip cached_track(const scene::GestureClip& clip, const core::Settings& s
             core::FrameResult r;
             r.timestamp = c.timestamp;
             r.state = static_cast<core::TrackerState>(c.state);
-            r.has_position = c.has_position != 0;
+            r.has_position = (c.flags & 1) != 0;
+            r.has_target = (c.flags & 2) != 0;
+            r.recovered = (c.flags & 4) != 0;
+            r.lost = (c.flags & 8) != 0;
             r.position = cv::Point3d(c.x, c.y, 0);
             if (c.area >= 0) r.area = c.area;
+            r.centroid = cv::Point2d(c.centroid_x, c.centroid_y);
+            r.inner = cv::Point2d(c.inner_x, c.inner_y);
+            r.movement = c.movement;
             tracked.results.push_back(r);
         }
         return tracked;
     }
     TrackedClip tracked = track_rendered(clip, settings);
-    std::filesystem::create_directories(dir);
+    std::filesystem::create_directories(folder);
     std::ofstream out(path, std::ios::binary);
     for (const core::FrameResult& r : tracked.results) {
-        const CachedResult c{r.timestamp,
-                             static_cast<std::int32_t>(r.state),
-                             r.has_position ? 1 : 0,
-                             r.position.x,
-                             r.position.y,
-                             r.area.value_or(-1.0)};
+        const std::int32_t flags = (r.has_position ? 1 : 0) | (r.has_target ? 2 : 0) |
+                                   (r.recovered ? 4 : 0) | (r.lost ? 8 : 0);
+        const CachedResult c{r.timestamp,  static_cast<std::int32_t>(r.state),
+                             flags,        r.position.x,
+                             r.position.y, r.area.value_or(-1.0),
+                             r.centroid.x, r.centroid.y,
+                             r.inner.x,    r.inner.y,
+                             r.movement};
         out.write(reinterpret_cast<const char*>(&c), sizeof c);
     }
     if (!out) throw InputError(path + ": cannot write the cache");
+    // The truth beside the results, for whoever studies the cache.
+    std::ofstream truth(folder + "/" + clip.spec.name + ".clicks");
+    truth << scene::click_truth_text(clip);
+    if (!truth) throw InputError(folder + "/" + clip.spec.name + ".clicks: cannot write");
     return tracked;
 }
 
@@ -183,7 +203,8 @@ std::vector<TrackedClip> track_all(const std::vector<scene::GestureClip>& set,
             const auto index = static_cast<std::size_t>(i);
             try {
                 if (index < set.size()) {
-                    tracked[index] = cached_track(set[index], settings, options.cache_dir);
+                    tracked[index] = cached_track(set[index], settings, options.cache_dir,
+                                                  options.set, options.seed);
                 } else {
                     const std::string& video = options.clips[index - set.size()];
                     tracked[index] = track_recorded(video, video + ".clicks", settings);

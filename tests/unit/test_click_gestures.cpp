@@ -24,22 +24,11 @@ using test::T;
 constexpr double aspect = 4.0 / 3.0;
 
 PointerSettings gestures() {
-    PointerSettings s = test::linear_pointer();
-    s.click.mode = ClickMode::depth;
-    s.click.start_rise = 0.05;
-    s.click.press_rise = 0.20;
-    s.click.release_rise = 0.10;
-    s.click.push_seconds = 0.35;
-    s.click.refractory_seconds = 0.3;
-    s.click.drag_seconds = 0.8;
-    s.click.baseline_seconds = 1000.0;
-    s.click.press_hold_seconds = 0.0;
-    s.click.release_drop = 0.0;
+    PointerSettings s = test::depth_pointer();
     s.click.right_seconds = 0.5;
     s.click.scroll_gain = 100.0;
     s.click.double_seconds = 0.6;
     s.click.hold_radius = 0.02;
-    s.safety.min_tracking_seconds = 0.2;
     return s;
 }
 

@@ -43,6 +43,29 @@ inline core::PointerSettings linear_pointer() {
     return s;
 }
 
+// The click transcripts' settings: click by depth, start 5%, press 20%, release 10%, push
+// 0.35 s, refractory 0.3 s, drag 0.8 s, no hold, no release_drop, a baseline held constant
+// (time constant 1000 s), clicks allowed after 0.2 s of tracking; the depth signal and the
+// push model off (test_click_signal.cpp turns them on).
+inline core::PointerSettings depth_pointer() {
+    core::PointerSettings s = linear_pointer();
+    s.click.mode = core::ClickMode::depth;
+    s.click.start_rise = 0.05;
+    s.click.press_rise = 0.20;
+    s.click.release_rise = 0.10;
+    s.click.push_seconds = 0.35;
+    s.click.refractory_seconds = 0.3;
+    s.click.drag_seconds = 0.8;
+    s.click.baseline_seconds = 1000.0;
+    s.click.press_hold_seconds = 0.0;
+    s.click.release_drop = 0.0;
+    s.click.glitch_jump = 0.0;
+    s.click.push_travel = 0.0;
+    s.click.push_dip = 0.0;
+    s.safety.min_tracking_seconds = 0.2;
+    return s;
+}
+
 struct PointerRow {
     double ms;           // frame time, milliseconds
     TrackerState state;  // the tracker's state after the frame

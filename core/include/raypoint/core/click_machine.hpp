@@ -3,9 +3,9 @@
 // Click by depth: pushing the target toward the camera presses the left button, pulling it back
 // releases it. Optionally ([click]): a push held still is a right click, two quick pushes a
 // double click, a push held while moving up or down scrolls. A state machine, one handler a state;
-// docs/pointer.md draws it and must change with it. Input is the target's scale, sqrt(area): the
-// raw estimate, not the smoothed z, whose once-a-frame average peaks 0.2 s after a push does
-// (docs/pointer.md). Frame time only.
+// docs/pointer.md draws it and must change with it. Input is the target's scale, sqrt(area) of
+// each frame through the depth signal (depth_signal.hpp), not the smoothed z, whose
+// once-a-frame average peaks 0.2 s after a push does (docs/pointer.md). Frame time only.
 
 #include <optional>
 #include <string_view>
@@ -18,10 +18,12 @@
 namespace raypoint::core {
 
 enum class ClickState {
-    inactive,    // no target, or tracked for less than min_tracking_seconds: never pressed
-    idle,        // the scale is near its baseline, which follows it
-    rising,      // the rise left start_rise: a push may be under way; the baseline is held
-    drifting,    // it rose too slowly to be a push: no press until it is back near the baseline
+    inactive,  // no target, or tracked for less than min_tracking_seconds: never pressed
+    idle,      // the scale is near its baseline, which follows it
+    rising,    // the rise left start_rise: a push may be under way; the baseline is held
+    // it rose too slowly, was carried sideways or fell back: not a push; no press until it is
+    // back near the baseline
+    drifting,
     pressed,     // the button is down, x and y are frozen; the baseline is held
     dragging,    // held pushed past drag_seconds: the button stays down, x and y move
     refractory,  // just released: no press for refractory_seconds nor before the rise settles
@@ -60,8 +62,10 @@ class ClickMachine {
     // the frame that picks a target). ready: tracked for min_tracking_seconds (PointerController
     // decides). Losing the target while the button is down releases it. where: the smoothed
     // position in frame widths on both axes (y down), read by HOLDING and SCROLLING only.
+    // late: the scale's change on this frame happened on the previous one (the depth signal
+    // gave back a step it had held for a frame), so push_seconds counts to that frame.
     ClickStep step(Timestamp timestamp, std::optional<double> scale, bool ready,
-                   cv::Point2d where = {}) noexcept;
+                   cv::Point2d where = {}, bool late = false) noexcept;
 
     // Pause, exit, signal: back to inactive. True when a button was down and must be released.
     bool release_all() noexcept;
@@ -84,9 +88,6 @@ class ClickMachine {
 
     void confirm() noexcept;  // RISING's push reached the press: PRESSED or HOLDING
     void press_left() noexcept;
-    double creep_speed() const noexcept;
-    void creep(cv::Point2d& anchor,
-               double step) const noexcept;  // with double_click when it follows a click in time
 
     void follow_baseline() noexcept;
     double seconds_since(Timestamp then) const noexcept;
@@ -101,6 +102,9 @@ class ClickMachine {
     double rise_ = 0.0;
     Timestamp last_frame_ = 0;  // the previous frame with a target
     Timestamp push_began_ = 0;
+    cv::Point2d push_from_;  // where the push began: the position of the frame before RISING
+    cv::Point2d last_where_;
+    double push_peak_ = 0.0;  // RISING: the largest scale since the push began
     Timestamp pressed_at_ = 0;
     Timestamp released_at_ = 0;
     // Since when the rise has been at press_rise (RISING) or at release_rise (PRESSED,
@@ -122,6 +126,7 @@ class ClickMachine {
     Timestamp now_ = 0;
     double scale_ = 0.0;
     bool ready_ = false;
+    bool late_ = false;
     cv::Point2d where_;
     ClickStep result_;
 };

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "raypoint/core/click_machine.hpp"
+#include "raypoint/core/depth_signal.hpp"
 #include "raypoint/core/dwell_clicker.hpp"
 #include "raypoint/core/pointer_command.hpp"
 #include "raypoint/core/pointer_mapper.hpp"
@@ -31,6 +32,7 @@ class PointerController {
     PointerCommand release_all() noexcept;
 
     const ClickMachine& click_machine() const noexcept { return clicker_; }
+    const DepthSignal& depth_signal() const noexcept { return depth_; }
     DwellState dwell_state() const noexcept { return dweller_.state(); }
     bool is_down(Button button) const noexcept { return down_[index(button)]; }
 
@@ -44,6 +46,7 @@ class PointerController {
     PointerSettings settings_;
     double frame_aspect_;
     PointerMapper mapper_;
+    DepthSignal depth_;
     ClickMachine clicker_;
     DwellClicker dweller_;
     std::optional<Timestamp> tracking_since_;

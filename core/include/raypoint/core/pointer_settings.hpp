@@ -55,10 +55,11 @@ struct ClickSettings {
     // 0.12%); motion after that is undone when the press comes.
     double start_rise = 0.05;
     // The press: the rise reaches this within push_seconds of the push's beginning. Chosen on
-    // the click gesture set (docs/clicks.md): 0.15 presses 86% of the pushes 15% or more closer
-    // within 0.6 s at 1.0 false click a minute of non-push motion; 0.20 pressed 75% at 2.5.
-    double press_rise = 0.15;
-    double release_rise = 0.10;  // the release, on pulling back: half the press, for hysteresis
+    // the click gesture set (docs/clicks.md) with the depth signal and the push model below:
+    // 0.13 presses 88% of the pushes 15% or more closer within 0.6 s at 0.46 false clicks a
+    // minute of non-push motion, 242 ms after the push began (81%, 0.55, 232 ms on seed 2).
+    double press_rise = 0.13;
+    double release_rise = 0.065;  // the release, on pulling back: half the press (hysteresis)
     // A rise slower than this is an approach, not a push: with 0.35 s ordinary approaches reach
     // 0.19, a hair under the press; 0.25 s still allows a push 1.5x slower than the scene's.
     double push_seconds = 0.25;
@@ -66,14 +67,29 @@ struct ClickSettings {
     // long to release: the area of a single frame can jump 25-70% and come back (a bad edge,
     // a blurred frame), and one frame must neither press nor release. Frame time, so 10, 30 and
     // 60 fps need the same time, not the same number of frames.
-    // 0.05 s: the gesture set's false clicks fell from 3.6 to 1.6 a minute at press_rise 0.14
-    // for 0.6 points of recall (docs/clicks.md).
-    double press_hold_seconds = 0.05;
+    // 0.03 s: one frame more at 10 and 30 fps, two at 60; with the depth signal taking the
+    // region's glitches out, 0.05 s cost 25 ms of latency for one false click in 10.9 minutes
+    // (docs/clicks.md).
+    double press_hold_seconds = 0.03;
     // The button also comes up when sqrt(area) falls this far (relative) below its largest value
     // while down, held press_hold_seconds: a target's size changes with its place in the view,
     // so after a drag the size it returns to may stay over release_rise of the old baseline.
     // 0: off. 0.25: the gesture set's drags no longer stick (docs/clicks.md).
     double release_drop = 0.25;
+    // The depth signal (depth_signal.hpp): a step of sqrt(area) of at least glitch_step
+    // (relative) in one frame that comes with a centroid jump of at least glitch_jump of the
+    // target's size is the tracker's region changing, not the target coming closer, and is
+    // taken out of the signal. 0: off. See docs/clicks.md for the values.
+    double glitch_step = 0.08;
+    double glitch_jump = 0.10;
+    // A push must not carry the target sideways: while rising, the smoothed position may move
+    // at most this many times the target's size (sqrt(area)) from where the push began;
+    // farther, it is an approach while moving, not a push. 0: off.
+    double push_travel = 0.1;
+    // A push grows on every frame: while rising, sqrt(area) may fall at most this far
+    // (relative) under its largest since the push began; farther, the rise was the bob of a
+    // step or a wobble, not a push. 0: off.
+    double push_dip = 0.05;
     // No press for this long after a release: a target that wobbles back does not click twice.
     double refractory_seconds = 0.3;
     double drag_seconds = 0.8;  // held pushed this long: a drag, x and y move again

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+// The depth signal the click machine reads: the tracked target's scale, sqrt(area), with the
+// steps that are not the target coming closer taken out. A push grows the target around a
+// steady centroid; when the tracker's region takes in something else (or drops it), the size
+// steps by 10-70% in one frame and the centroid jumps with it, and the new size may stay.
+// Such a step is absorbed: the signal keeps its previous value and follows the new level's
+// changes from there, so neither a one-frame glitch nor a step that stays reads as a push.
+// When the centroid is back where it was on the next frame, the step is given back: the size
+// that stays up with the centroid back in place is a push whose frame blurred (at 10 fps a
+// push of 0.25 s is one frame), and a size back too was a one-frame glitch.
+// Pure: no allocation, no exceptions.
+
+#include <optional>
+
+#include <opencv2/core.hpp>
+
+#include "raypoint/core/pointer_settings.hpp"
+
+namespace raypoint::core {
+
+class DepthSignal {
+  public:
+    explicit DepthSignal(const ClickSettings& settings) noexcept : settings_(settings) {}
+
+    // scale: sqrt(area) this frame, or nullopt without a target (which starts over).
+    // centroid: the tracker's raw centroid this frame, frame widths on both axes.
+    // Returns the scale with the region's steps taken out; nullopt without a target.
+    std::optional<double> update(std::optional<double> scale, cv::Point2d centroid) noexcept;
+
+    // Whether the last update absorbed a step.
+    bool absorbed() const noexcept { return absorbed_; }
+    // Whether the last update gave back the step absorbed on the frame before: the size
+    // changed then, not now.
+    bool given_back() const noexcept { return given_back_; }
+    void reset() noexcept;
+
+  private:
+    ClickSettings settings_;
+    double previous_ = 0.0;  // the raw scale of the previous frame; 0: none
+    cv::Point2d previous_centroid_;
+    double gain_ = 1.0;  // signal = raw scale x gain; each absorbed step rescales it
+    // The step absorbed on the previous frame: the centroid, scale and gain before it. When
+    // the centroid is back the next frame, the jump was the centroid's alone (a blurred
+    // frame, at 10 fps a push's own frame) and the step is given back.
+    bool pending_ = false;
+    cv::Point2d before_centroid_;
+    double before_scale_ = 0.0;
+    double before_gain_ = 1.0;
+    bool absorbed_ = false;
+    bool given_back_ = false;
+};
+
+}  // namespace raypoint::core

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+#include "raypoint/core/depth_signal.hpp"
+
+#include <cmath>
+
+namespace raypoint::core {
+
+void DepthSignal::reset() noexcept {
+    previous_ = 0.0;
+    gain_ = 1.0;
+    pending_ = false;
+    given_back_ = false;
+    absorbed_ = false;
+}
+
+std::optional<double> DepthSignal::update(std::optional<double> scale,
+                                          cv::Point2d centroid) noexcept {
+    absorbed_ = false;
+    given_back_ = false;
+    if (!scale || !(*scale > 0.0)) {
+        reset();
+        return std::nullopt;
+    }
+    const bool pending = pending_;
+    pending_ = false;
+    if (pending && cv::norm(centroid - before_centroid_) < settings_.glitch_jump * before_scale_) {
+        gain_ = before_gain_;  // the centroid is back: whatever the size does now is the target's
+        given_back_ = true;
+    } else if (previous_ > 0.0 && settings_.glitch_jump > 0.0) {
+        const double step = *scale / previous_ - 1.0;
+        // The centroid's jump in units of the target's size: a push about a steady centroid
+        // moves it little (the gesture set's pushes: a median 0.01 of the size a frame), a
+        // region that takes in or drops a piece moves it by about the piece's share.
+        const double jump = cv::norm(centroid - previous_centroid_) / previous_;
+        if (std::abs(step) >= settings_.glitch_step && jump >= settings_.glitch_jump) {
+            pending_ = true;
+            before_centroid_ = previous_centroid_;
+            before_scale_ = previous_;
+            before_gain_ = gain_;
+            gain_ *= previous_ / *scale;
+            absorbed_ = true;
+        }
+    }
+    previous_ = *scale;
+    previous_centroid_ = centroid;
+    return *scale * gain_;
+}
+
+}  // namespace raypoint::core

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: MIT
+// The depth signal (depth_signal.hpp) and the push model (push_travel, push_dip) as transcripts
+// (test_pointer_transcript.hpp): 10 fps rows in, the click state and the device command out.
+// The transcripts' centroid is the row's x, y, as the smoothed position is. Settings: those of
+// test_click_machine.cpp (start 5%, press 20%, release 10%, push 0.35 s, no hold, a constant
+// baseline) with, in each test, the part under test on.
+
+#include <gtest/gtest.h>
+
+#include "raypoint/core/depth_signal.hpp"
+#include "raypoint/core/pointer_controller.hpp"
+#include "test_pointer_transcript.hpp"
+
+namespace raypoint::core {
+namespace {
+
+using test::picked;
+using test::play;
+using test::T;
+
+constexpr double aspect = 4.0 / 3.0;
+
+PointerSettings depth() {
+    return test::depth_pointer();
+}
+
+PointerSettings glitches() {
+    PointerSettings s = depth();
+    s.click.glitch_jump = 0.1;
+    return s;
+}
+
+TEST(DepthSignal, AStepWithACentroidJumpThatStaysIsNotAPush) {
+    // The region takes in something beside the target: +35% and the centroid 0.3 of the
+    // size away, and it stays so. Without the signal it would press; with it the level is
+    // the new baseline, and a push from there presses.
+    PointerController pointer(glitches(), aspect);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.56, 0.5,  0.270,  "idle",       "rel -60 0"},  // absorbed
+        { 500,   T,       0.56, 0.5,  0.270,  "idle",       ""},           // and it stays
+        { 600,   T,       0.56, 0.5,  0.270,  "idle",       ""},
+        { 700,   T,       0.56, 0.5,  0.300,  "rising",     ""},           // +11%: a push
+        { 800,   T,       0.56, 0.5,  0.330,  "pressed",    "+left"},      // +22%
+    });
+    // clang-format on
+}
+
+TEST(DepthSignal, AOneFrameGlitchThatComesBackIsNotAPush) {
+    // 0.035 -> 0.10 -> 0.035 of the frame's area has been seen: sqrt(area) +70% for one frame.
+    PointerController pointer(glitches(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.44, 0.5,  0.340,  "idle",       "rel 60 0"},   // absorbed
+        { 500,   T,       0.5,  0.5,  0.200,  "idle",       "rel -60 0"},  // back: given back
+        { 600,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+    });
+    // clang-format on
+}
+
+TEST(DepthSignal, APushWhoseCentroidBlipsForOneFramePresses) {
+    // At 10 fps a quick push is one frame, and the frame may blur: +35% with the centroid
+    // 0.3 of the size away, back in place the next frame with the size still up. The step is
+    // given back on that frame, which presses.
+    PointerController pointer(glitches(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.56, 0.270,  "idle",       "rel 0 45"},  // absorbed
+        { 500,   T,       0.5,  0.5,  0.280,  "pressed",    "+left"},     // given back: +40%
+    });
+    // clang-format on
+}
+
+TEST(DepthSignal, AStepGivenBackCountsFromTheFrameItCameOn) {
+    // push_seconds 0.25: the push began after 300 ms; its big step came at 500 ms with a
+    // centroid blip and is given back at 600 ms, 0.3 s in. It came 0.2 s in: a press.
+    PointerSettings settings = glitches();
+    settings.click.push_seconds = 0.25;
+    PointerController pointer(settings, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.5,  0.215,  "rising",     ""},
+        { 500,   T,       0.5,  0.56, 0.290,  "rising",     "rel 0 45"},        // held back
+        { 600,   T,       0.5,  0.5,  0.300,  "pressed",    "rel 0 -45 +left"}, // given back
+    });
+    // clang-format on
+}
+
+TEST(DepthSignal, StepsWithoutACentroidJumpAndSmallStepsAreKept) {
+    DepthSignal signal(glitches().click);
+    const cv::Point2d here(0.5, 0.4);
+    EXPECT_DOUBLE_EQ(*signal.update(0.20, here), 0.20);
+    EXPECT_DOUBLE_EQ(*signal.update(0.27, here + cv::Point2d(0.005, 0)), 0.27);  // a push
+    EXPECT_FALSE(signal.absorbed());
+    // 5%, under glitch_step, with a jump of 0.3 of the size: the target's own motion.
+    EXPECT_DOUBLE_EQ(*signal.update(0.2835, here + cv::Point2d(0.09, 0)), 0.2835);
+    EXPECT_FALSE(signal.absorbed());
+    // No target: nothing, and a fresh start.
+    EXPECT_FALSE(signal.update(std::nullopt, here).has_value());
+    EXPECT_DOUBLE_EQ(*signal.update(0.4, here), 0.4);
+}
+
+TEST(DepthSignal, OffPassesTheScaleThrough) {
+    DepthSignal signal(depth().click);  // glitch_jump 0
+    EXPECT_DOUBLE_EQ(*signal.update(0.20, {0.5, 0.4}), 0.20);
+    EXPECT_DOUBLE_EQ(*signal.update(0.34, {0.3, 0.4}), 0.34);
+    EXPECT_FALSE(signal.absorbed());
+}
+
+TEST(PushModel, AnApproachCarriedSidewaysIsNotAPush) {
+    // push_travel 0.1: the position may move 0.1 of the size (0.02 frame widths here) while
+    // the push rises. The hand comes 22% closer while moving 0.06 frame widths: an approach.
+    PointerSettings settings = depth();
+    settings.click.push_travel = 0.1;
+    PointerController pointer(settings, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.51, 0.5,  0.215,  "rising",     "rel -10 0"},
+        { 500,   T,       0.53, 0.5,  0.230,  "drifting",   "rel -20 0"},  // 0.03 > 0.02
+        { 600,   T,       0.56, 0.5,  0.245,  "drifting",   "rel -30 0"},  // no press
+    });
+    // clang-format on
+    // The same push in place presses.
+    PointerController still(settings, aspect);
+    // clang-format off
+    play(still, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.51, 0.5,  0.215,  "rising",     "rel -10 0"},
+        { 500,   T,       0.515,0.5,  0.230,  "rising",     "rel -5 0"},
+        { 600,   T,       0.515,0.5,  0.245,  "pressed",    "rel 15 0 +left"},  // undone
+    });
+    // clang-format on
+}
+
+TEST(PushModel, ARiseThatFallsBackIsNotAPush) {
+    // push_dip 0.05: the bob of a step raises the size and drops it again; a push keeps
+    // growing. Drifting until the rise is back under start_rise.
+    PointerSettings settings = depth();
+    settings.click.push_dip = 0.05;
+    PointerController pointer(settings, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.5,  0.230,  "rising",     ""},   // +15%
+        { 500,   T,       0.5,  0.5,  0.216,  "drifting",   ""},   // 6% under its largest
+        { 600,   T,       0.5,  0.5,  0.250,  "drifting",   ""},   // +25%: no press
+        { 700,   T,       0.5,  0.5,  0.205,  "idle",       ""},   // back: +2.5%
+    });
+    // clang-format on
+}
+
+}  // namespace
+}  // namespace raypoint::core
