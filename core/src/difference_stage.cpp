@@ -7,6 +7,10 @@
 #include <algorithm>
 #include <cstdlib>
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#endif
+
 namespace raypoint::core {
 namespace {
 
@@ -103,6 +107,19 @@ double compensated_sum(const std::array<int, 256>& histogram, int offset) noexce
     return static_cast<double>(sum);
 }
 
+struct LightRatio {
+    unsigned usable;  // 1 when neither value is dark or saturated, else 0
+    unsigned ratio;   // now / before in 1/gain_one, rounded
+};
+
+// One pixel's light ratio, by the reciprocal table (2^24 / before) instead of a division.
+inline LightRatio light_ratio(unsigned now, unsigned before,
+                              const std::array<std::uint32_t, 256>& reciprocal) noexcept {
+    return {static_cast<unsigned>(now - darkest <= brightest - darkest) &
+                static_cast<unsigned>(before - darkest <= brightest - darkest),
+            (now * reciprocal[before] + 0x8000U) >> 16U};
+}
+
 // The median of the ratios current / previous over the pixels of rows [top, top + rows) (every
 // ratio_step-th column) that are neither dark nor saturated in either frame, in 1/gain_one; 1
 // when under a quarter of them are.
@@ -115,11 +132,7 @@ int band_gain(const cv::Mat& grey, const cv::Mat& previous_grey, int top, int ro
         const std::uint8_t* now = grey.ptr<std::uint8_t>(y);
         const std::uint8_t* before = previous_grey.ptr<std::uint8_t>(y);
         for (int x = 0; x < grey.cols; x += ratio_step) {
-            const unsigned a = now[x];
-            const unsigned b = before[x];
-            const unsigned usable = static_cast<unsigned>(a - darkest <= brightest - darkest) &
-                                    static_cast<unsigned>(b - darkest <= brightest - darkest);
-            const unsigned ratio = (a * reciprocal[b] + 0x8000U) >> 16U;
+            const auto [usable, ratio] = light_ratio(now[x], before[x], reciprocal);
             const unsigned bin = std::min(std::max(ratio, unsigned{lowest_ratio}) - lowest_ratio,
                                           unsigned{ratio_bins - 1});
             ++bins[usable != 0U ? bin : unsigned{ratio_bins}];
@@ -134,6 +147,92 @@ int band_gain(const cv::Mat& grey, const cv::Mat& previous_grey, int top, int ro
         if (2 * below >= counted) return lowest_ratio + bin;
     }
     return gain_one;
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+struct StillCounts {
+    unsigned counted = 0;
+    unsigned below = 0;
+    unsigned upto = 0;
+};
+
+// band_steady()'s three counts over one row's samples, four at a time (SSE2), up to the last
+// whole group of 32 columns; x is left at the first sample not counted. For values both within
+// [darkest, brightest] the rounded ratio of the reciprocal table is under gain_one -
+// steady_light exactly when 512 now < 507 before, and at most gain_one + steady_light exactly
+// when 512 now < 517 before (checked over every such pair), so no table lookup is needed.
+StillCounts count_still(const std::uint8_t* now, const std::uint8_t* before, int width,
+                        int& x) noexcept {
+    static_assert(ratio_step == 8 && gain_one == 256 && steady_light == 2);
+    const __m128i sample = _mm_set1_epi64x(0xff);  // bytes 0 and 8 of 16: two samples
+    const __m128i too_dark = _mm_set1_epi32(darkest - 1);
+    const __m128i too_bright = _mm_set1_epi32(brightest + 1);
+    __m128i counted = _mm_setzero_si128();
+    __m128i below = _mm_setzero_si128();
+    __m128i upto = _mm_setzero_si128();
+    // Four samples as 32-bit lanes: each 64-bit half holds one in its low byte.
+    const auto samples = [&sample](const std::uint8_t* row) noexcept {
+        const __m128i low =
+            _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row)), sample);
+        const __m128i high =
+            _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + 16)), sample);
+        return _mm_packs_epi32(low, high);  // int16 s, 0 pairs: the samples as int32 lanes
+    };
+    for (; x + 4 * ratio_step <= width; x += 4 * ratio_step) {
+        const __m128i a = samples(now + x);
+        const __m128i b = samples(before + x);
+        const __m128i usable = _mm_and_si128(
+            _mm_and_si128(_mm_cmpgt_epi32(a, too_dark), _mm_cmplt_epi32(a, too_bright)),
+            _mm_and_si128(_mm_cmpgt_epi32(b, too_dark), _mm_cmplt_epi32(b, too_bright)));
+        const __m128i a512 = _mm_slli_epi32(a, 9);
+        const __m128i b512 = _mm_slli_epi32(b, 9);
+        const __m128i b5 = _mm_add_epi32(_mm_slli_epi32(b, 2), b);
+        counted = _mm_sub_epi32(counted, usable);  // lanes of -1 where usable
+        below = _mm_sub_epi32(
+            below, _mm_and_si128(usable, _mm_cmplt_epi32(a512, _mm_sub_epi32(b512, b5))));
+        upto = _mm_sub_epi32(upto,
+                             _mm_and_si128(usable, _mm_cmplt_epi32(a512, _mm_add_epi32(b512, b5))));
+    }
+    const auto sum = [](__m128i lanes) noexcept {
+        lanes = _mm_add_epi32(lanes, _mm_shuffle_epi32(lanes, 0x4e));
+        lanes = _mm_add_epi32(lanes, _mm_shuffle_epi32(lanes, 0xb1));
+        return static_cast<unsigned>(_mm_cvtsi128_si32(lanes));
+    };
+    return {sum(counted), sum(below), sum(upto)};
+}
+#endif
+
+// Whether band_gain() would return a gain within steady_light of 1, without its histogram: the
+// median bin is within [gain_one - steady_light, gain_one + steady_light] exactly when fewer
+// than half of the counted ratios lie below the range and at least half lie at or below its
+// top (the clamp to the bins cannot move a ratio across either end: both are inside them).
+// A band of still light, the common case, then costs three counters instead of a histogram
+// of 385 bins cleared and walked to its median.
+bool band_steady(const cv::Mat& grey, const cv::Mat& previous_grey, int top, int rows,
+                 const std::array<std::uint32_t, 256>& reciprocal) noexcept {
+    unsigned counted = 0;
+    unsigned below = 0;  // usable ratios under gain_one - steady_light
+    unsigned upto = 0;   // usable ratios at most gain_one + steady_light
+    for (int y = top; y < top + rows; ++y) {
+        const std::uint8_t* now = grey.ptr<std::uint8_t>(y);
+        const std::uint8_t* before = previous_grey.ptr<std::uint8_t>(y);
+        int x = 0;
+#if defined(__x86_64__) && defined(__GNUC__)
+        const StillCounts vector = count_still(now, before, grey.cols, x);
+        counted += vector.counted;
+        below += vector.below;
+        upto += vector.upto;
+#endif
+        for (; x < grey.cols; x += ratio_step) {
+            const auto [usable, ratio] = light_ratio(now[x], before[x], reciprocal);
+            counted += usable;
+            below += usable & static_cast<unsigned>(ratio < unsigned{gain_one - steady_light});
+            upto += usable & static_cast<unsigned>(ratio <= unsigned{gain_one + steady_light});
+        }
+    }
+    const auto sampled = static_cast<unsigned>(rows * ((grey.cols + ratio_step - 1) / ratio_step));
+    if (4 * counted < sampled) return true;  // band_gain() returns gain_one
+    return 2 * below < counted && 2 * upto >= counted;
 }
 
 }  // namespace
@@ -179,6 +278,15 @@ bool DifferenceStage::estimate_row_gains(const cv::Mat& grey,
                                          const cv::Mat& previous_grey) noexcept {
     const int rows = grey.rows;
     const int bands = static_cast<int>(band_gains_.size());
+    // Most frames have still light in every band: tell that cheaply, and compute the gains
+    // only when a band's changed (from the first band again: all of them are interpolated).
+    bool any_changed = false;
+    for (int band = 0; band < bands && !any_changed; ++band) {
+        const int top = band * band_rows;
+        any_changed =
+            !band_steady(grey, previous_grey, top, std::min(band_rows, rows - top), reciprocal_);
+    }
+    if (!any_changed) return false;
     bool changed = false;
     for (int band = 0; band < bands; ++band) {
         const int top = band * band_rows;
@@ -272,7 +380,8 @@ void DifferenceStage::compute(const cv::Mat& grey, const cv::Mat& previous_grey,
         movement_ = compensated_sum(channel_histogram, offset_of(channel_histogram, minima_));
     }
     const auto offset = static_cast<std::uint8_t>(offset_);
-    for (int y = 0; y < height; ++y) {
+    // An offset of 0 (a still scene under still light, most of all) leaves every pixel as is.
+    for (int y = 0; y < height && offset != 0; ++y) {
         std::uint8_t* row = difference_.ptr<std::uint8_t>(y);
         for (int x = 0; x < width; ++x)
             row[x] = static_cast<std::uint8_t>(row[x] > offset ? row[x] - offset : 0);

@@ -195,5 +195,23 @@ TEST(DifferenceStage, RowCompensationWithoutALightChangeIsThePapers) {
     EXPECT_EQ(paper.movement(), rows.movement());
 }
 
+double lower_bands_brighter(int row) {
+    return row >= 100 ? 1.3 : 1.0;
+}
+
+// A light change in the last five bands of rows alone is found (the 25 bands of still light
+// before them are told apart without their median), and those bands are relit.
+TEST(DifferenceStage, RowCompensationFindsALightChangeInTheLastBandsAlone) {
+    const cv::Mat before = textured(unlit, cv::Rect(20, 50, 16, 16));
+    const cv::Mat after = textured(lower_bands_brighter, cv::Rect(28, 50, 16, 16));
+    DifferenceStage rows(difference_settings(EdgeSource::max_channel, Compensation::rows));
+    rows.compute(after, before, as_colour(after), as_colour(before));
+    ASSERT_TRUE(rows.relit());
+    for (const cv::Point at : {cv::Point(100, 118), cv::Point(140, 119), cv::Point(100, 12)}) {
+        const int now = after.at<std::uint8_t>(at);
+        EXPECT_NEAR(rows.previous_color_relit().at<cv::Vec3b>(at)[1], now, 3) << at;
+    }
+}
+
 }  // namespace
 }  // namespace raypoint::core
