@@ -80,7 +80,7 @@ std::filesystem::path ini_to_write(std::span<const std::string_view> args) {
 PreviewInput::PreviewInput(const PreviewInputOptions& options, const config::Config& config,
                            bool unpaced) {
     if (!options.clip.empty()) {
-        source_ = make_recorded_source({options.clip, !unpaced, false, false});
+        source_ = make_recorded_source({options.clip, !unpaced, false, false, false, {}});
         return;
     }
     if (options.use_control) {

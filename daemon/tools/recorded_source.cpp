@@ -8,6 +8,10 @@
 namespace raypoint::daemon {
 
 std::unique_ptr<FrameSource> make_recorded_source(const RecordedInput& input) {
+    if (input.realtime && input.mjpeg) {
+        return std::make_unique<RealtimeSource>(load_mjpeg_clip(input.path, input.least),
+                                                input.path, input.loop);
+    }
     if (input.realtime) {
         return std::make_unique<RealtimeSource>(load_yuyv_clip(input.path), input.path, input.loop);
     }

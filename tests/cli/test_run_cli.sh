@@ -130,6 +130,24 @@ grep -q 'cost of this run:' "$work/realtime.log" || fail "no cost summary: $(cat
 grep -q 'run cpu: [0-9.]*% of one core (user' "$work/realtime.log" || fail "no run cpu in the summary"
 grep -q 'latency ready to write: median [0-9]* us, p99' "$work/realtime.log" || fail "no latency in the summary"
 grep -q 'EV_REL REL_X' "$work/realtime.events" || fail "realtime: no motion"
+# --realtime-format mjpeg: the same clip as an MJPEG camera's frames, decoded when due at the
+# camera path's size (320x240 by default: 4/8 of 640x480); it tracks and moves the pointer too.
+"$raypoint" run --input "$work/nonconvex/video.mp4" --realtime --realtime-format mjpeg \
+  --duration 3 --sink "file:$work/mjpeg.events" --no-control 2>"$work/mjpeg.log" ||
+  fail "--realtime-format mjpeg: exit $? ($(cat "$work/mjpeg.log"))"
+grep -q 'replayed in real time as MJPEG 640x480, decoded at 4/8 scale' "$work/mjpeg.log" ||
+  fail "mjpeg: $(cat "$work/mjpeg.log")"
+grep -q 'run cpu: [0-9.]*% of one core (user' "$work/mjpeg.log" || fail "mjpeg: no run cpu"
+grep -q ' 0 dropped)' "$work/mjpeg.log" || fail "mjpeg: frames dropped: $(cat "$work/mjpeg.log")"
+grep -q 'EV_REL REL_X' "$work/mjpeg.events" || fail "mjpeg: no motion"
+"$raypoint" run --input "$work/nonconvex/video.mp4" --realtime-format mjpeg --sink null \
+  --no-control 2>"$work/err.txt"
+[ $? -eq 2 ] && grep -q "realtime-format is the replayed camera's format: it needs --realtime" \
+  "$work/err.txt" || fail "--realtime-format alone: $(cat "$work/err.txt")"
+"$raypoint" run --input "$work/nonconvex/video.mp4" --realtime --realtime-format nv12 \
+  --sink null --no-control 2>"$work/err.txt"
+[ $? -eq 2 ] && grep -q "realtime-format nv12: unknown (allowed: yuyv, mjpeg)" "$work/err.txt" ||
+  fail "--realtime-format nv12: $(cat "$work/err.txt")"
 "$raypoint" run --realtime --sink null --no-control 2>"$work/err.txt"
 [ $? -eq 2 ] && grep -q "needs --input" "$work/err.txt" || fail "--realtime alone: $(cat "$work/err.txt")"
 "$raypoint" run --input "$work/push/video.mp4" --duration 0 --sink null 2>"$work/err.txt"

@@ -19,6 +19,10 @@ constexpr std::array run_options{
                "with --input: decode the clip first, then replay it from\n"
                "memory as a YUYV camera would deliver it (the daemon's\n"
                "own cost, printed at exit and in ctl status)"},
+    OptionSpec{"--realtime-format", "yuyv|mjpeg",
+               "with --realtime: the replayed camera's frames: yuyv\n"
+               "(default) or mjpeg (quality 85, decoded when due, as the\n"
+               "camera path decodes an MJPEG camera's)"},
     OptionSpec{"--duration", "SECONDS", "stop after SECONDS (with --realtime the clip loops)"},
     OptionSpec{"--sink", "SPEC", "uinput (default), file:PATH (the events as text), null"},
     OptionSpec{"--control", "PATH", "control socket (default $XDG_RUNTIME_DIR/raypoint.sock)"},

@@ -25,6 +25,8 @@ struct RunOptions {
     std::string input;  // a recorded video instead of the camera
     bool paced = true;
     bool realtime = false;  // --input decoded up front, replayed as a YUYV camera
+    bool mjpeg = false;     // --realtime-format mjpeg: replayed as an MJPEG camera
+    bool format_given = false;
     std::optional<double> duration_s;
     std::optional<std::string> camera;  // overrides camera.device
     bool lock_exposure = false;         // or camera.lock_exposure
@@ -54,6 +56,14 @@ RunOptions parse_run_options(std::span<const std::string_view> args) {
             options.paced = false;
         } else if (arg == "--realtime") {
             options.realtime = true;
+        } else if (arg == "--realtime-format") {
+            const std::string_view format = option_value(args, i);
+            if (format != "yuyv" && format != "mjpeg") {
+                throw UsageError("--realtime-format " + std::string(format) +
+                                 ": unknown (allowed: yuyv, mjpeg)");
+            }
+            options.mjpeg = format == "mjpeg";
+            options.format_given = true;
         } else if (arg == "--duration") {
             options.duration_s = parse_duration(option_value(args, i));
         } else if (arg == "--camera") {
@@ -72,6 +82,9 @@ RunOptions parse_run_options(std::span<const std::string_view> args) {
     }
     if (options.realtime && options.input.empty()) {
         throw UsageError("--realtime replays a clip: it needs --input CLIP");
+    }
+    if (options.format_given && !options.realtime) {
+        throw UsageError("--realtime-format is the replayed camera's format: it needs --realtime");
     }
     if (options.realtime && !options.paced) {
         throw UsageError("--realtime and --unpaced contradict each other: choose one");
@@ -105,8 +118,13 @@ int run_command(std::span<const std::string_view> args, RecordedSourceFactory re
             throw UsageError("--input: this binary reads no video files; run it as raypoint-tools");
         }
         // With --duration a --realtime clip loops to fill it; without, it plays once.
-        parts.source = recorded(
-            {options.input, options.paced, options.realtime, options.duration_s.has_value()});
+        // An MJPEG replay is decoded to the size the camera path would ask for.
+        CameraOptions camera;
+        camera.settings = parts.config.camera;
+        camera.working = cv::Size(preprocess.work_width, preprocess.work_height);
+        parts.source =
+            recorded({options.input, options.paced, options.realtime,
+                      options.duration_s.has_value(), options.mjpeg, camera.capture_least()});
         parts.exit_when_lost = true;
     } else {
         CameraOptions camera;

@@ -23,8 +23,14 @@ constexpr std::int64_t waiting_limit = 3;
 }  // namespace
 
 RealtimeSource::RealtimeSource(YuyvClip clip, std::string label, bool loop)
+    : RealtimeSource(std::variant<YuyvClip, MjpegClip>(std::move(clip)), std::move(label), loop) {}
+
+RealtimeSource::RealtimeSource(MjpegClip clip, std::string label, bool loop)
+    : RealtimeSource(std::variant<YuyvClip, MjpegClip>(std::move(clip)), std::move(label), loop) {}
+
+RealtimeSource::RealtimeSource(std::variant<YuyvClip, MjpegClip> clip, std::string label, bool loop)
     : clip_(std::move(clip)), label_(std::move(label)), loop_(loop) {
-    if (clip_.frame_count() == 0) throw std::invalid_argument(label_ + ": the clip has no frames");
+    if (frame_count() == 0) throw std::invalid_argument(label_ + ": the clip has no frames");
     timer_fd_ = timerfd_create(CLOCK_MONOTONIC, TFD_NONBLOCK | TFD_CLOEXEC);
     if (timer_fd_ < 0) {
         throw std::runtime_error(std::string("timerfd_create(CLOCK_MONOTONIC): ") +
@@ -38,8 +44,16 @@ RealtimeSource::~RealtimeSource() {
     if (timer_fd_ >= 0) close(timer_fd_);
 }
 
+double RealtimeSource::fps() const noexcept {
+    return on_clip([](const auto& clip) { return clip.fps(); });
+}
+
+int RealtimeSource::frame_count() const noexcept {
+    return on_clip([](const auto& clip) { return clip.frame_count(); });
+}
+
 core::Timestamp RealtimeSource::due(std::int64_t serial) const noexcept {
-    return start_ + core::seconds_to_us(static_cast<double>(serial) / clip_.fps());
+    return start_ + core::seconds_to_us(static_cast<double>(serial) / fps());
 }
 
 void RealtimeSource::arm(core::Timestamp when) noexcept {
@@ -73,13 +87,13 @@ Capture RealtimeSource::next(int timeout_ms) {
     if (start_ < 0) start_ = now;
     // The newest frame due by now; with more than `waiting_limit` waiting, the older ones were
     // overwritten, as in a camera's full buffer queue.
-    const auto newest = static_cast<std::int64_t>(
-        std::floor(static_cast<double>(now - start_) * clip_.fps() / 1e6));
+    const auto newest =
+        static_cast<std::int64_t>(std::floor(static_cast<double>(now - start_) * fps() / 1e6));
     if (newest - serial_ >= waiting_limit) {
         dropped_ += newest - waiting_limit + 1 - serial_;
         serial_ = newest - waiting_limit + 1;
     }
-    if (!loop_ && serial_ >= clip_.frame_count()) {
+    if (!loop_ && serial_ >= frame_count()) {
         finished_ = true;
         return end_of_input_capture();
     }
@@ -88,24 +102,36 @@ Capture RealtimeSource::next(int timeout_ms) {
         arm(when);
         return capture;
     }
-    capture.frame = clip_.view(static_cast<int>(serial_ % clip_.frame_count()), when);
+    const int index = static_cast<int>(serial_ % frame_count());
+    capture.frame = on_clip([&](auto& clip) { return clip.view(index, when); });
+    ++serial_;
+    arm(due(serial_));                    // also after the last frame: then next() says ended
+    if (capture.frame.data == nullptr) {  // an MJPEG frame that does not decode: skipped
+        ++dropped_;
+        return Capture{};
+    }
     capture.ready = when;
     capture.status = CaptureStatus::frame;
-    ++serial_;
     ++delivered_;
-    arm(due(serial_));  // also after the last frame: then next() says ended
     return capture;
 }
 
 std::string RealtimeSource::description() const {
-    const double megabytes = static_cast<double>(clip_.memory_bytes()) / (1024.0 * 1024.0);
-    char text[256];
+    const std::size_t bytes = on_clip([](const auto& clip) { return clip.memory_bytes(); });
+    const cv::Size size = on_clip([](const auto& clip) { return clip.size(); });
+    const double megabytes = static_cast<double>(bytes) / (1024.0 * 1024.0);
+    char decoded[64] = "";
+    if (const auto* mjpeg = std::get_if<MjpegClip>(&clip_)) {
+        std::snprintf(decoded, sizeof decoded, ", decoded at %d/8 scale as a camera's",
+                      mjpeg->scale_eighths());
+    }
+    char text[320];
     std::snprintf(text, sizeof text,
-                  " (replayed in real time as YUYV %dx%d at %.2f fps, %d frames%s; %.1f MiB of "
+                  " (replayed in real time as %s %dx%d%s at %.2f fps, %d frames%s; %.1f MiB of "
                   "frames held in memory, not a camera's cost; %lld delivered, %lld dropped)",
-                  clip_.size().width, clip_.size().height, clip_.fps(), clip_.frame_count(),
-                  loop_ ? ", looped" : "", megabytes, static_cast<long long>(delivered_),
-                  static_cast<long long>(dropped_));
+                  decoded[0] != '\0' ? "MJPEG" : "YUYV", size.width, size.height, decoded, fps(),
+                  frame_count(), loop_ ? ", looped" : "", megabytes,
+                  static_cast<long long>(delivered_), static_cast<long long>(dropped_));
     return label_ + text;
 }
 

@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # The VM tests' fixture (CTest vm_prepare): checks the prerequisites, builds the initramfs for
 # the newest installed kernel that has v4l2loopback, and renders the clips the scenarios play,
-# as raw YUYV. Writes VM_DIR/kernel.env, VM_DIR/initramfs.gz and VM_DIR/clips/*.yuyv.
+# as raw YUYV (and one as MJPEG). Writes VM_DIR/kernel.env, VM_DIR/initramfs.gz and
+# VM_DIR/clips/*.yuyv, *.mjpg.
 # usage: prepare.sh VM_DIR RENDER_SCENE LOOPBACK_WRITER
 set -euo pipefail
 vm_dir=$1
@@ -48,6 +49,14 @@ for clip in rightdown click drag rightclick doubleclick scroll; do
   "$writer" convert "$root/$clip/video.mp4" "$out.new"
   mv "$out.new" "$out"
 done
+
+# The capture scenario's MJPEG camera: rightdown's frames as JPEGs.
+out="$vm_dir/clips/rightdown.mjpg"
+if ! [ "$out" -nt "$render" ]; then
+  "$render" --preset rightdown --out "$root/rightdown" --no-masks >/dev/null
+  "$writer" convert "$root/rightdown/video.mp4" "$out.new" --mjpeg
+  mv "$out.new" "$out"
+fi
 
 printf 'kernel_version=%s\nkernel_image=%s\n' "$kernel_version" "$kernel_image" > "$vm_dir/kernel.env"
 echo "VM ready: $vm_dir"

@@ -44,14 +44,17 @@ wait_for() {
   return 1
 }
 
-# start_writer CLIP LOG [play options]: plays the clip into $camera (with --wait:
+# start_writer CLIP LOG [play options]: plays the clip (CLIP.yuyv, or CLIP as named, e.g.
+# rightdown.mjpg) into $camera (with --wait:
 # its first frame until go) and returns after the first frame. Sets writer_pid, and origin
 # (clip time 0, CLOCK_MONOTONIC seconds) unless it waits.
 start_writer() {
   local clip=$1
   writer_log="$work/$2"
   shift 2
-  "$tools/raypoint-loopback-writer" play "$clips/$clip.yuyv" "$camera" "$@" >"$writer_log" 2>&1 &
+  local file="$clips/$clip"
+  [ -e "$file" ] || file="$file.yuyv"
+  "$tools/raypoint-loopback-writer" play "$file" "$camera" "$@" >"$writer_log" 2>&1 &
   writer_pid=$!
   wait_for "$writer_log" '^first frame' 30 || bad "writer: no first frame ($(cat "$writer_log"))"
   case " $* " in

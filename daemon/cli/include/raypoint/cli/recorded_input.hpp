@@ -10,6 +10,8 @@
 #include <memory>
 #include <string>
 
+#include <opencv2/core/types.hpp>
+
 #include "raypoint/capture/frame_source.hpp"
 
 namespace raypoint::daemon {
@@ -19,6 +21,10 @@ struct RecordedInput {
     bool paced = true;      // at the clip's own frame rate, or as fast as the core runs
     bool realtime = false;  // decoded up front, replayed from memory as a YUYV camera
     bool loop = false;      // with realtime: start again at the end (--duration)
+    // With realtime: replayed as an MJPEG camera's frames (compressed up front, decoded when
+    // due, at least at `least`, as the camera path decodes them) instead of YUYV.
+    bool mjpeg = false;
+    cv::Size least;
 };
 
 // Opens the clip; throws a std::runtime_error naming the path when it cannot be read as video.
