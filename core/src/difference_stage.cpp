@@ -4,8 +4,12 @@
 
 #include "raypoint/core/difference_stage.hpp"
 
+#include "difference_kernels.hpp"
+
 #include <algorithm>
 #include <cstdlib>
+#include <tuple>
+#include <utility>
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
@@ -32,13 +36,6 @@ constexpr int brightest = 254;
 // left to the paper's offset; when every band is, the relit difference is not computed.
 constexpr int steady_light = 2;
 
-// |a - b| byte by byte; the unsigned form vectorizes.
-void absolute_difference(const std::uint8_t* __restrict a, const std::uint8_t* __restrict b,
-                         std::uint8_t* __restrict out, int length) noexcept {
-    for (int i = 0; i < length; ++i)
-        out[i] = static_cast<std::uint8_t>(std::max(a[i], b[i]) - std::min(a[i], b[i]));
-}
-
 // b x gain byte by byte, gain in 1/gain_one (below 2), rounded and capped at 255. The gain is
 // applied in 1/128 (the product then fits 16 bits, 8 lanes a multiply): within a grey level.
 void scale(const std::uint8_t* __restrict b, int gain, std::uint8_t* __restrict out,
@@ -48,63 +45,6 @@ void scale(const std::uint8_t* __restrict b, int gain, std::uint8_t* __restrict 
         const auto product = static_cast<std::uint16_t>(b[i] * g + 64U);
         out[i] = static_cast<std::uint8_t>(std::min<std::uint16_t>(product >> 7U, 255));
     }
-}
-
-using PartialHistograms = std::array<std::array<int, 256>, 4>;
-
-// Four interleaved histograms: a still scene puts nearly every pixel in one bin, and
-// incrementing one counter back to back waits for each previous increment.
-void count(PartialHistograms& bins, const std::uint8_t* values, int length) noexcept {
-    int x = 0;
-    for (; x + 4 <= length; x += 4) {
-        ++bins[0][values[x]];
-        ++bins[1][values[x + 1]];
-        ++bins[2][values[x + 2]];
-        ++bins[3][values[x + 3]];
-    }
-    for (; x < length; ++x)
-        ++bins[0][values[x]];
-}
-
-// count() of values[0], values[3], ... values[3 * (length - 1)].
-void count_every_third(PartialHistograms& bins, const std::uint8_t* values, int length) noexcept {
-    int x = 0;
-    for (; x + 4 <= length; x += 4) {
-        ++bins[0][values[3 * x]];
-        ++bins[1][values[3 * x + 3]];
-        ++bins[2][values[3 * x + 6]];
-        ++bins[3][values[3 * x + 9]];
-    }
-    for (; x < length; ++x)
-        ++bins[0][values[3 * x]];
-}
-
-std::array<int, 256> total(const PartialHistograms& bins) noexcept {
-    std::array<int, 256> histogram{};
-    for (int value = 0; value < 256; ++value) {
-        histogram[value] = bins[0][value] + bins[1][value] + bins[2][value] + bins[3][value];
-    }
-    return histogram;
-}
-
-int offset_of(const std::array<int, 256>& histogram, int minima) noexcept {
-    int distinct = 0;
-    int largest = 0;
-    for (int value = 0; value < 256 && distinct < minima; ++value) {
-        if (histogram[value] == 0) continue;
-        ++distinct;
-        largest = value;
-    }
-    return largest;
-}
-
-// The sum of max(0, value - offset) over the pixels the histogram counted; exact (an integer
-// sum, at most 19,200 x 255 at the working size).
-double compensated_sum(const std::array<int, 256>& histogram, int offset) noexcept {
-    std::int64_t sum = 0;
-    for (int value = offset + 1; value < 256; ++value)
-        sum += static_cast<std::int64_t>(histogram[value]) * (value - offset);
-    return static_cast<double>(sum);
 }
 
 struct LightRatio {
@@ -238,17 +178,20 @@ bool band_steady(const cv::Mat& grey, const cv::Mat& previous_grey, int top, int
 }  // namespace
 
 int brightness_offset(const cv::Mat& difference, int minima) noexcept {
-    PartialHistograms bins{};
-    for (int y = 0; y < difference.rows; ++y)
-        count(bins, difference.ptr<std::uint8_t>(y), difference.cols);
-    return offset_of(total(bins), minima);
+    // The kernels read one run of bytes.
+    const cv::Mat continuous = difference.isContinuous() ? difference : difference.clone();
+    const std::uint8_t* values = continuous.data;
+    const std::size_t pixels = continuous.total();
+    const std::uint8_t smallest = pixels == 0 ? 255 : *std::min_element(values, values + pixels);
+    return detail::difference_kernels::distinct_offset(values, pixels, smallest, minima);
 }
 
 DifferenceStage::DifferenceStage(const PreprocessSettings& settings)
     : channels_(settings.movement_source == EdgeSource::max_channel),
       rows_(settings.compensation == Compensation::rows),
       minima_(settings.compensation_minima),
-      channel_row_(static_cast<std::size_t>(settings.work_width) * 6),
+      strongest_(static_cast<std::size_t>(settings.work_width) *
+                 static_cast<std::size_t>(settings.work_height)),
       band_gains_(static_cast<std::size_t>((settings.work_height + band_rows - 1) / band_rows)),
       row_gains_(static_cast<std::size_t>(settings.work_height), gain_one),
       grey_row_(static_cast<std::size_t>(settings.work_width)) {
@@ -322,33 +265,40 @@ bool DifferenceStage::estimate_row_gains(const cv::Mat& grey,
 // only the kept grey image is compensated in place.
 void DifferenceStage::compute(const cv::Mat& grey, const cv::Mat& previous_grey,
                               const cv::Mat& color, const cv::Mat& previous_color) noexcept {
+    namespace kernels = detail::difference_kernels;
     const bool channels = channels_;  // a local: the stores below cannot change it
     const int width = difference_.cols;
     const int height = difference_.rows;
-    std::uint8_t* const channel_row = channel_row_.data();  // 3 * width, then 3 * width
-    std::uint8_t* const strongest = channel_row + 3 * width;
-    grey_bins_ = {};
+    const auto pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    // The offset from the uncompensated image, then the image compensated in place with its
+    // sum; a relit candidate that loses is scratch. An offset of 0 (a still scene under still
+    // light, most of all) leaves every pixel as is.
+    const auto compensated = [this, pixels](cv::Mat& difference, std::uint8_t smallest) {
+        const int offset = kernels::distinct_offset(difference.data, pixels, smallest, minima_);
+        const auto subtrahend = static_cast<std::uint8_t>(offset);
+        const std::int64_t sum = offset == 0
+                                     ? kernels::compensated_sum(difference.data, pixels, 0)
+                                     : kernels::compensate(difference.data, pixels, subtrahend);
+        return std::pair{offset, static_cast<double>(sum)};
+    };
+    std::uint8_t smallest = 255;
     for (int y = 0; y < height; ++y) {
-        absolute_difference(grey.ptr<std::uint8_t>(y), previous_grey.ptr<std::uint8_t>(y),
-                            difference_.ptr<std::uint8_t>(y), width);
-        count(grey_bins_, difference_.ptr<std::uint8_t>(y), width);
+        smallest = kernels::absolute_difference(grey.ptr<std::uint8_t>(y),
+                                                previous_grey.ptr<std::uint8_t>(y),
+                                                difference_.ptr<std::uint8_t>(y), width, smallest);
     }
-    std::array<int, 256> grey_histogram = total(grey_bins_);
-    offset_ = offset_of(grey_histogram, minima_);
-    movement_ = compensated_sum(grey_histogram, offset_);
+    std::tie(offset_, movement_) = compensated(difference_, smallest);
     relit_current_ = false;
     if (rows_ && estimate_row_gains(grey, previous_grey)) {
         std::uint8_t* const grey_row = grey_row_.data();
-        grey_bins_ = {};
+        smallest = 255;
         for (int y = 0; y < height; ++y) {
             scale(previous_grey.ptr<std::uint8_t>(y), row_gains_[y], grey_row, width);
-            absolute_difference(grey.ptr<std::uint8_t>(y), grey_row,
-                                relit_difference_.ptr<std::uint8_t>(y), width);
-            count(grey_bins_, relit_difference_.ptr<std::uint8_t>(y), width);
+            smallest = kernels::absolute_difference(grey.ptr<std::uint8_t>(y), grey_row,
+                                                    relit_difference_.ptr<std::uint8_t>(y), width,
+                                                    smallest);
         }
-        grey_histogram = total(grey_bins_);
-        const int offset = offset_of(grey_histogram, minima_);
-        const double movement = compensated_sum(grey_histogram, offset);
+        const auto [offset, movement] = compensated(relit_difference_, smallest);
         if (movement < movement_) {
             std::swap(difference_, relit_difference_);
             offset_ = offset;
@@ -356,35 +306,24 @@ void DifferenceStage::compute(const cv::Mat& grey, const cv::Mat& previous_grey,
             relit_current_ = true;
         }
     }
-    if (channels || relit_current_) {
-        channel_bins_ = {};
-        for (int y = 0; y < height; ++y) {
-            const std::uint8_t* color_before = previous_color.ptr<std::uint8_t>(y);
-            if (relit_current_) {
-                // Flicker changes every channel alike: the grey image's gains serve them. The
-                // colour validation reads this image too (previous_color_relit()).
-                scale(color_before, row_gains_[y], relit_.ptr<std::uint8_t>(y), 3 * width);
-                color_before = relit_.ptr<std::uint8_t>(y);
-            }
-            if (!channels) continue;
-            absolute_difference(color.ptr<std::uint8_t>(y), color_before, channel_row, 3 * width);
-            // The max of each byte and the next two, contiguous so it vectorizes; pixel x's is
-            // at 3x.
-            for (int i = 0; i + 2 < 3 * width; ++i)
-                strongest[i] = std::max({channel_row[i], channel_row[i + 1], channel_row[i + 2]});
-            count_every_third(channel_bins_, strongest, width);
+    if (!channels && !relit_current_) return;
+    smallest = 255;
+    for (int y = 0; y < height; ++y) {
+        const std::uint8_t* color_before = previous_color.ptr<std::uint8_t>(y);
+        if (relit_current_) {
+            // Flicker changes every channel alike: the grey image's gains serve them. The
+            // colour validation reads this image too (previous_color_relit()).
+            scale(color_before, row_gains_[y], relit_.ptr<std::uint8_t>(y), 3 * width);
+            color_before = relit_.ptr<std::uint8_t>(y);
         }
+        if (!channels) continue;
+        smallest = kernels::strongest_channel(color.ptr<std::uint8_t>(y), color_before,
+                                              strongest_.data() + y * width, width, smallest);
     }
     if (channels) {
-        const std::array<int, 256> channel_histogram = total(channel_bins_);
-        movement_ = compensated_sum(channel_histogram, offset_of(channel_histogram, minima_));
-    }
-    const auto offset = static_cast<std::uint8_t>(offset_);
-    // An offset of 0 (a still scene under still light, most of all) leaves every pixel as is.
-    for (int y = 0; y < height && offset != 0; ++y) {
-        std::uint8_t* row = difference_.ptr<std::uint8_t>(y);
-        for (int x = 0; x < width; ++x)
-            row[x] = static_cast<std::uint8_t>(row[x] > offset ? row[x] - offset : 0);
+        const int offset = kernels::distinct_offset(strongest_.data(), pixels, smallest, minima_);
+        movement_ = static_cast<double>(
+            kernels::compensated_sum(strongest_.data(), pixels, static_cast<std::uint8_t>(offset)));
     }
 }
 
