@@ -290,11 +290,11 @@ bool DifferenceStage::estimate_row_gains(const cv::Mat& grey,
 // the target is what contrasts most. The movement value that starts a search may come from
 // the largest per-channel difference instead, which also sees a skin hand move over a wall of
 // its own brightness.
-// The grey difference and its histogram as they are (the paper's); under Compensation::rows the
-// same with each row of the previous image relit, kept when it leaves less movement: a light
-// change by band (flicker, gain) is explained by the ratios, an even offset (the paper's case)
-// by the paper's compensation. The offsets and the movement sums come from the histograms, so
-// only the kept grey image is compensated in place.
+// The grey difference as it is (the paper's); under Compensation::rows the same with each row
+// of the previous image relit, kept when it leaves less movement: a light change by band
+// (flicker, gain) is explained by the ratios, an even offset (the paper's case) by the paper's
+// compensation. Each candidate is compensated in place as its movement is summed; the
+// per-channel maxima are only summed.
 void DifferenceStage::compute(const cv::Mat& grey, const cv::Mat& previous_grey,
                               const cv::Mat& color, const cv::Mat& previous_color) noexcept {
     namespace kernels = detail::difference_kernels;
