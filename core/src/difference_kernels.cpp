@@ -218,13 +218,18 @@ std::int64_t compensate(std::uint8_t* values, std::size_t length, std::uint8_t o
     const __m128i subtrahend = _mm_set1_epi8(static_cast<char>(offset));
     const __m128i zero = _mm_setzero_si128();
     __m128i sum = zero;
+    __m128i sum1 = zero;
     std::size_t i = 0;
-    for (; i + 16 <= length; i += 16) {
-        const __m128i compensated = _mm_subs_epu8(load(values + i), subtrahend);
-        store(values + i, compensated);
-        sum = _mm_add_epi64(sum, _mm_sad_epu8(compensated, zero));
+    for (; i + 32 <= length; i += 32) {
+        const __m128i compensated0 = _mm_subs_epu8(load(values + i), subtrahend);
+        const __m128i compensated1 = _mm_subs_epu8(load(values + i + 16), subtrahend);
+        store(values + i, compensated0);
+        store(values + i + 16, compensated1);
+        sum = _mm_add_epi64(sum, _mm_sad_epu8(compensated0, zero));
+        sum1 = _mm_add_epi64(sum1, _mm_sad_epu8(compensated1, zero));
     }
-    return horizontal_sum(sum) + portable::compensate(values + i, length - i, offset);
+    return horizontal_sum(_mm_add_epi64(sum, sum1)) +
+           portable::compensate(values + i, length - i, offset);
 }
 
 std::int64_t compensated_sum(const std::uint8_t* values, std::size_t length,
@@ -232,10 +237,15 @@ std::int64_t compensated_sum(const std::uint8_t* values, std::size_t length,
     const __m128i subtrahend = _mm_set1_epi8(static_cast<char>(offset));
     const __m128i zero = _mm_setzero_si128();
     __m128i sum = zero;
+    __m128i sum1 = zero;
     std::size_t i = 0;
-    for (; i + 16 <= length; i += 16)
+    for (; i + 32 <= length; i += 32) {
         sum = _mm_add_epi64(sum, _mm_sad_epu8(_mm_subs_epu8(load(values + i), subtrahend), zero));
-    return horizontal_sum(sum) + portable::compensated_sum(values + i, length - i, offset);
+        sum1 = _mm_add_epi64(sum1,
+                             _mm_sad_epu8(_mm_subs_epu8(load(values + i + 16), subtrahend), zero));
+    }
+    return horizontal_sum(_mm_add_epi64(sum, sum1)) +
+           portable::compensated_sum(values + i, length - i, offset);
 }
 
 }  // namespace sse2
