@@ -212,40 +212,40 @@ int distinct_offset(const std::uint8_t* values, std::size_t length, std::uint8_t
     return distinct_offset_by<smallest_from>(values, length, smallest, minima);
 }
 
+namespace {
 // max(0, value - offset) is the saturating subtraction, and psadbw against 0 sums 8 bytes
-// into a 64-bit lane: exact.
-std::int64_t compensate(std::uint8_t* values, std::size_t length, std::uint8_t offset) noexcept {
+// into a 64-bit lane: exact. `out` (values itself, or nothing) receives the results.
+template <bool stored>
+std::int64_t compensated_by(const std::uint8_t* values, std::uint8_t* out, std::size_t length,
+                            std::uint8_t offset) noexcept {
     const __m128i subtrahend = _mm_set1_epi8(static_cast<char>(offset));
     const __m128i zero = _mm_setzero_si128();
-    __m128i sum = zero;
+    __m128i sum0 = zero;
     __m128i sum1 = zero;
     std::size_t i = 0;
     for (; i + 32 <= length; i += 32) {
         const __m128i compensated0 = _mm_subs_epu8(load(values + i), subtrahend);
         const __m128i compensated1 = _mm_subs_epu8(load(values + i + 16), subtrahend);
-        store(values + i, compensated0);
-        store(values + i + 16, compensated1);
-        sum = _mm_add_epi64(sum, _mm_sad_epu8(compensated0, zero));
+        if constexpr (stored) {
+            store(out + i, compensated0);
+            store(out + i + 16, compensated1);
+        }
+        sum0 = _mm_add_epi64(sum0, _mm_sad_epu8(compensated0, zero));
         sum1 = _mm_add_epi64(sum1, _mm_sad_epu8(compensated1, zero));
     }
-    return horizontal_sum(_mm_add_epi64(sum, sum1)) +
-           portable::compensate(values + i, length - i, offset);
+    const std::int64_t rest = stored ? portable::compensate(out + i, length - i, offset)
+                                     : portable::compensated_sum(values + i, length - i, offset);
+    return horizontal_sum(_mm_add_epi64(sum0, sum1)) + rest;
+}
+}  // namespace
+
+std::int64_t compensate(std::uint8_t* values, std::size_t length, std::uint8_t offset) noexcept {
+    return compensated_by<true>(values, values, length, offset);
 }
 
 std::int64_t compensated_sum(const std::uint8_t* values, std::size_t length,
                              std::uint8_t offset) noexcept {
-    const __m128i subtrahend = _mm_set1_epi8(static_cast<char>(offset));
-    const __m128i zero = _mm_setzero_si128();
-    __m128i sum = zero;
-    __m128i sum1 = zero;
-    std::size_t i = 0;
-    for (; i + 32 <= length; i += 32) {
-        sum = _mm_add_epi64(sum, _mm_sad_epu8(_mm_subs_epu8(load(values + i), subtrahend), zero));
-        sum1 = _mm_add_epi64(sum1,
-                             _mm_sad_epu8(_mm_subs_epu8(load(values + i + 16), subtrahend), zero));
-    }
-    return horizontal_sum(_mm_add_epi64(sum, sum1)) +
-           portable::compensated_sum(values + i, length - i, offset);
+    return compensated_by<false>(values, nullptr, length, offset);
 }
 
 }  // namespace sse2
