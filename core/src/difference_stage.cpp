@@ -4,8 +4,12 @@
 
 #include "raypoint/core/difference_stage.hpp"
 
+#include "difference_kernels.hpp"
+
 #include <algorithm>
 #include <cstdlib>
+#include <tuple>
+#include <utility>
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
@@ -32,13 +36,6 @@ constexpr int brightest = 254;
 // left to the paper's offset; when every band is, the relit difference is not computed.
 constexpr int steady_light = 2;
 
-// |a - b| byte by byte; the unsigned form vectorizes.
-void absolute_difference(const std::uint8_t* __restrict a, const std::uint8_t* __restrict b,
-                         std::uint8_t* __restrict out, int length) noexcept {
-    for (int i = 0; i < length; ++i)
-        out[i] = static_cast<std::uint8_t>(std::max(a[i], b[i]) - std::min(a[i], b[i]));
-}
-
 // b x gain byte by byte, gain in 1/gain_one (below 2), rounded and capped at 255. The gain is
 // applied in 1/128 (the product then fits 16 bits, 8 lanes a multiply): within a grey level.
 void scale(const std::uint8_t* __restrict b, int gain, std::uint8_t* __restrict out,
@@ -48,63 +45,6 @@ void scale(const std::uint8_t* __restrict b, int gain, std::uint8_t* __restrict 
         const auto product = static_cast<std::uint16_t>(b[i] * g + 64U);
         out[i] = static_cast<std::uint8_t>(std::min<std::uint16_t>(product >> 7U, 255));
     }
-}
-
-using PartialHistograms = std::array<std::array<int, 256>, 4>;
-
-// Four interleaved histograms: a still scene puts nearly every pixel in one bin, and
-// incrementing one counter back to back waits for each previous increment.
-void count(PartialHistograms& bins, const std::uint8_t* values, int length) noexcept {
-    int x = 0;
-    for (; x + 4 <= length; x += 4) {
-        ++bins[0][values[x]];
-        ++bins[1][values[x + 1]];
-        ++bins[2][values[x + 2]];
-        ++bins[3][values[x + 3]];
-    }
-    for (; x < length; ++x)
-        ++bins[0][values[x]];
-}
-
-// count() of values[0], values[3], ... values[3 * (length - 1)].
-void count_every_third(PartialHistograms& bins, const std::uint8_t* values, int length) noexcept {
-    int x = 0;
-    for (; x + 4 <= length; x += 4) {
-        ++bins[0][values[3 * x]];
-        ++bins[1][values[3 * x + 3]];
-        ++bins[2][values[3 * x + 6]];
-        ++bins[3][values[3 * x + 9]];
-    }
-    for (; x < length; ++x)
-        ++bins[0][values[3 * x]];
-}
-
-std::array<int, 256> total(const PartialHistograms& bins) noexcept {
-    std::array<int, 256> histogram{};
-    for (int value = 0; value < 256; ++value) {
-        histogram[value] = bins[0][value] + bins[1][value] + bins[2][value] + bins[3][value];
-    }
-    return histogram;
-}
-
-int offset_of(const std::array<int, 256>& histogram, int minima) noexcept {
-    int distinct = 0;
-    int largest = 0;
-    for (int value = 0; value < 256 && distinct < minima; ++value) {
-        if (histogram[value] == 0) continue;
-        ++distinct;
-        largest = value;
-    }
-    return largest;
-}
-
-// The sum of max(0, value - offset) over the pixels the histogram counted; exact (an integer
-// sum, at most 19,200 x 255 at the working size).
-double compensated_sum(const std::array<int, 256>& histogram, int offset) noexcept {
-    std::int64_t sum = 0;
-    for (int value = offset + 1; value < 256; ++value)
-        sum += static_cast<std::int64_t>(histogram[value]) * (value - offset);
-    return static_cast<double>(sum);
 }
 
 struct LightRatio {
@@ -156,50 +96,76 @@ struct StillCounts {
     unsigned upto = 0;
 };
 
-// band_steady()'s three counts over one row's samples, four at a time (SSE2), up to the last
-// whole group of 32 columns; x is left at the first sample not counted. For values both within
-// [darkest, brightest] the rounded ratio of the reciprocal table is under gain_one -
-// steady_light exactly when 512 now < 507 before, and at most gain_one + steady_light exactly
-// when 512 now < 517 before (checked over every such pair), so no table lookup is needed.
-StillCounts count_still(const std::uint8_t* now, const std::uint8_t* before, int width,
-                        int& x) noexcept {
-    static_assert(ratio_step == 8 && gain_one == 256 && steady_light == 2);
-    const __m128i sample = _mm_set1_epi64x(0xff);  // bytes 0 and 8 of 16: two samples
-    const __m128i too_dark = _mm_set1_epi32(darkest - 1);
-    const __m128i too_bright = _mm_set1_epi32(brightest + 1);
-    __m128i counted = _mm_setzero_si128();
-    __m128i below = _mm_setzero_si128();
-    __m128i upto = _mm_setzero_si128();
-    // Four samples as 32-bit lanes: each 64-bit half holds one in its low byte.
-    const auto samples = [&sample](const std::uint8_t* row) noexcept {
+// band_steady()'s three counts over a band's samples, eight at a time as 16-bit lanes (SSE2),
+// summed once a band. For values both within [darkest, brightest] the rounded ratio of the
+// reciprocal table is under gain_one - steady_light exactly when 512 now < 507 before, and at
+// most gain_one + steady_light exactly when 512 now < 517 before (checked over every such
+// pair): with e = before - now and g = 5 before, when 512 e > g and when 512 e + g > 0. e is
+// clamped to [-32, 32] first, which keeps 512 e and 512 e + g within 16 bits and changes
+// neither answer (g is at most 1275 < 512 x 32).
+class StillCounter {
+  public:
+    // The samples of one row up to the last whole group of 32 columns; returns the first column
+    // not counted.
+    int count_row(const std::uint8_t* now, const std::uint8_t* before, int width) noexcept {
+        static_assert(ratio_step == 8 && gain_one == 256 && steady_light == 2);
+        int x = 0;
+        for (; x + 8 * ratio_step <= width; x += 8 * ratio_step)
+            count(eight_samples(now + x), eight_samples(before + x));
+        if (x + 4 * ratio_step <= width) {
+            const __m128i zero = _mm_setzero_si128();  // 0 is too dark: not counted
+            count(_mm_packs_epi32(four_samples(now + x), zero),
+                  _mm_packs_epi32(four_samples(before + x), zero));
+            x += 4 * ratio_step;
+        }
+        return x;
+    }
+
+    StillCounts total() const noexcept { return {sum(counted_), sum(below_), sum(upto_)}; }
+
+  private:
+    // Bytes 0, 8, 16, 24 of `row` as 32-bit lanes.
+    static __m128i four_samples(const std::uint8_t* row) noexcept {
+        const __m128i sample = _mm_set1_epi64x(0xff);  // bytes 0 and 8 of 16: two samples
         const __m128i low =
             _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row)), sample);
         const __m128i high =
             _mm_and_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(row + 16)), sample);
         return _mm_packs_epi32(low, high);  // int16 s, 0 pairs: the samples as int32 lanes
-    };
-    for (; x + 4 * ratio_step <= width; x += 4 * ratio_step) {
-        const __m128i a = samples(now + x);
-        const __m128i b = samples(before + x);
-        const __m128i usable = _mm_and_si128(
-            _mm_and_si128(_mm_cmpgt_epi32(a, too_dark), _mm_cmplt_epi32(a, too_bright)),
-            _mm_and_si128(_mm_cmpgt_epi32(b, too_dark), _mm_cmplt_epi32(b, too_bright)));
-        const __m128i a512 = _mm_slli_epi32(a, 9);
-        const __m128i b512 = _mm_slli_epi32(b, 9);
-        const __m128i b5 = _mm_add_epi32(_mm_slli_epi32(b, 2), b);
-        counted = _mm_sub_epi32(counted, usable);  // lanes of -1 where usable
-        below = _mm_sub_epi32(
-            below, _mm_and_si128(usable, _mm_cmplt_epi32(a512, _mm_sub_epi32(b512, b5))));
-        upto = _mm_sub_epi32(upto,
-                             _mm_and_si128(usable, _mm_cmplt_epi32(a512, _mm_add_epi32(b512, b5))));
     }
-    const auto sum = [](__m128i lanes) noexcept {
+
+    // Bytes 0, 8, ..., 56 of `row` as 16-bit lanes.
+    static __m128i eight_samples(const std::uint8_t* row) noexcept {
+        return _mm_packs_epi32(four_samples(row), four_samples(row + 32));
+    }
+
+    void count(__m128i a, __m128i b) noexcept {
+        const __m128i too_dark = _mm_set1_epi16(darkest - 1);
+        const __m128i too_bright = _mm_set1_epi16(brightest + 1);
+        const __m128i usable = _mm_and_si128(
+            _mm_and_si128(_mm_cmpgt_epi16(a, too_dark), _mm_cmplt_epi16(a, too_bright)),
+            _mm_and_si128(_mm_cmpgt_epi16(b, too_dark), _mm_cmplt_epi16(b, too_bright)));
+        const __m128i e = _mm_min_epi16(_mm_max_epi16(_mm_sub_epi16(b, a), _mm_set1_epi16(-32)),
+                                        _mm_set1_epi16(32));
+        const __m128i e512 = _mm_slli_epi16(e, 9);
+        const __m128i g = _mm_add_epi16(_mm_slli_epi16(b, 2), b);
+        counted_ = _mm_sub_epi16(counted_, usable);  // lanes of -1 where usable
+        below_ = _mm_sub_epi16(below_, _mm_and_si128(usable, _mm_cmpgt_epi16(e512, g)));
+        upto_ = _mm_sub_epi16(upto_, _mm_and_si128(usable, _mm_cmpgt_epi16(_mm_add_epi16(e512, g),
+                                                                           _mm_setzero_si128())));
+    }
+
+    static unsigned sum(__m128i lanes) noexcept {
+        lanes = _mm_madd_epi16(lanes, _mm_set1_epi16(1));  // 16-bit pairs to 32-bit lanes
         lanes = _mm_add_epi32(lanes, _mm_shuffle_epi32(lanes, 0x4e));
         lanes = _mm_add_epi32(lanes, _mm_shuffle_epi32(lanes, 0xb1));
         return static_cast<unsigned>(_mm_cvtsi128_si32(lanes));
-    };
-    return {sum(counted), sum(below), sum(upto)};
-}
+    }
+
+    __m128i counted_ = _mm_setzero_si128();
+    __m128i below_ = _mm_setzero_si128();
+    __m128i upto_ = _mm_setzero_si128();
+};
 #endif
 
 // Whether band_gain() would return a gain within steady_light of 1, without its histogram: the
@@ -213,15 +179,15 @@ bool band_steady(const cv::Mat& grey, const cv::Mat& previous_grey, int top, int
     unsigned counted = 0;
     unsigned below = 0;  // usable ratios under gain_one - steady_light
     unsigned upto = 0;   // usable ratios at most gain_one + steady_light
+#if defined(__x86_64__) && defined(__GNUC__)
+    StillCounter vector;
+#endif
     for (int y = top; y < top + rows; ++y) {
         const std::uint8_t* now = grey.ptr<std::uint8_t>(y);
         const std::uint8_t* before = previous_grey.ptr<std::uint8_t>(y);
         int x = 0;
 #if defined(__x86_64__) && defined(__GNUC__)
-        const StillCounts vector = count_still(now, before, grey.cols, x);
-        counted += vector.counted;
-        below += vector.below;
-        upto += vector.upto;
+        x = vector.count_row(now, before, grey.cols);
 #endif
         for (; x < grey.cols; x += ratio_step) {
             const auto [usable, ratio] = light_ratio(now[x], before[x], reciprocal);
@@ -230,6 +196,12 @@ bool band_steady(const cv::Mat& grey, const cv::Mat& previous_grey, int top, int
             upto += usable & static_cast<unsigned>(ratio <= unsigned{gain_one + steady_light});
         }
     }
+#if defined(__x86_64__) && defined(__GNUC__)
+    const StillCounts counts = vector.total();
+    counted += counts.counted;
+    below += counts.below;
+    upto += counts.upto;
+#endif
     const auto sampled = static_cast<unsigned>(rows * ((grey.cols + ratio_step - 1) / ratio_step));
     if (4 * counted < sampled) return true;  // band_gain() returns gain_one
     return 2 * below < counted && 2 * upto >= counted;
@@ -238,17 +210,20 @@ bool band_steady(const cv::Mat& grey, const cv::Mat& previous_grey, int top, int
 }  // namespace
 
 int brightness_offset(const cv::Mat& difference, int minima) noexcept {
-    PartialHistograms bins{};
-    for (int y = 0; y < difference.rows; ++y)
-        count(bins, difference.ptr<std::uint8_t>(y), difference.cols);
-    return offset_of(total(bins), minima);
+    // The kernels read one run of bytes.
+    const cv::Mat continuous = difference.isContinuous() ? difference : difference.clone();
+    const std::uint8_t* values = continuous.data;
+    const std::size_t pixels = continuous.total();
+    const std::uint8_t smallest = pixels == 0 ? 255 : *std::min_element(values, values + pixels);
+    return detail::difference_kernels::distinct_offset(values, pixels, smallest, minima);
 }
 
 DifferenceStage::DifferenceStage(const PreprocessSettings& settings)
     : channels_(settings.movement_source == EdgeSource::max_channel),
       rows_(settings.compensation == Compensation::rows),
       minima_(settings.compensation_minima),
-      channel_row_(static_cast<std::size_t>(settings.work_width) * 6),
+      strongest_(static_cast<std::size_t>(settings.work_width) *
+                 static_cast<std::size_t>(settings.work_height)),
       band_gains_(static_cast<std::size_t>((settings.work_height + band_rows - 1) / band_rows)),
       row_gains_(static_cast<std::size_t>(settings.work_height), gain_one),
       grey_row_(static_cast<std::size_t>(settings.work_width)) {
@@ -315,40 +290,47 @@ bool DifferenceStage::estimate_row_gains(const cv::Mat& grey,
 // the target is what contrasts most. The movement value that starts a search may come from
 // the largest per-channel difference instead, which also sees a skin hand move over a wall of
 // its own brightness.
-// The grey difference and its histogram as they are (the paper's); under Compensation::rows the
-// same with each row of the previous image relit, kept when it leaves less movement: a light
-// change by band (flicker, gain) is explained by the ratios, an even offset (the paper's case)
-// by the paper's compensation. The offsets and the movement sums come from the histograms, so
-// only the kept grey image is compensated in place.
+// The grey difference as it is (the paper's); under Compensation::rows the same with each row
+// of the previous image relit, kept when it leaves less movement: a light change by band
+// (flicker, gain) is explained by the ratios, an even offset (the paper's case) by the paper's
+// compensation. Each candidate is compensated in place as its movement is summed; the
+// per-channel maxima are only summed.
 void DifferenceStage::compute(const cv::Mat& grey, const cv::Mat& previous_grey,
                               const cv::Mat& color, const cv::Mat& previous_color) noexcept {
+    namespace kernels = detail::difference_kernels;
     const bool channels = channels_;  // a local: the stores below cannot change it
     const int width = difference_.cols;
     const int height = difference_.rows;
-    std::uint8_t* const channel_row = channel_row_.data();  // 3 * width, then 3 * width
-    std::uint8_t* const strongest = channel_row + 3 * width;
-    grey_bins_ = {};
+    const auto pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    // The offset from the uncompensated image, then the image compensated in place with its
+    // sum; a relit candidate that loses is scratch. An offset of 0 (a still scene under still
+    // light, most of all) leaves every pixel as is.
+    const auto compensated = [this, pixels](cv::Mat& difference, std::uint8_t smallest) {
+        const int offset = kernels::distinct_offset(difference.data, pixels, smallest, minima_);
+        const auto subtrahend = static_cast<std::uint8_t>(offset);
+        const std::int64_t sum = offset == 0
+                                     ? kernels::compensated_sum(difference.data, pixels, 0)
+                                     : kernels::compensate(difference.data, pixels, subtrahend);
+        return std::pair{offset, static_cast<double>(sum)};
+    };
+    std::uint8_t smallest = 255;
     for (int y = 0; y < height; ++y) {
-        absolute_difference(grey.ptr<std::uint8_t>(y), previous_grey.ptr<std::uint8_t>(y),
-                            difference_.ptr<std::uint8_t>(y), width);
-        count(grey_bins_, difference_.ptr<std::uint8_t>(y), width);
+        smallest = kernels::absolute_difference(grey.ptr<std::uint8_t>(y),
+                                                previous_grey.ptr<std::uint8_t>(y),
+                                                difference_.ptr<std::uint8_t>(y), width, smallest);
     }
-    std::array<int, 256> grey_histogram = total(grey_bins_);
-    offset_ = offset_of(grey_histogram, minima_);
-    movement_ = compensated_sum(grey_histogram, offset_);
+    std::tie(offset_, movement_) = compensated(difference_, smallest);
     relit_current_ = false;
     if (rows_ && estimate_row_gains(grey, previous_grey)) {
         std::uint8_t* const grey_row = grey_row_.data();
-        grey_bins_ = {};
+        smallest = 255;
         for (int y = 0; y < height; ++y) {
             scale(previous_grey.ptr<std::uint8_t>(y), row_gains_[y], grey_row, width);
-            absolute_difference(grey.ptr<std::uint8_t>(y), grey_row,
-                                relit_difference_.ptr<std::uint8_t>(y), width);
-            count(grey_bins_, relit_difference_.ptr<std::uint8_t>(y), width);
+            smallest = kernels::absolute_difference(grey.ptr<std::uint8_t>(y), grey_row,
+                                                    relit_difference_.ptr<std::uint8_t>(y), width,
+                                                    smallest);
         }
-        grey_histogram = total(grey_bins_);
-        const int offset = offset_of(grey_histogram, minima_);
-        const double movement = compensated_sum(grey_histogram, offset);
+        const auto [offset, movement] = compensated(relit_difference_, smallest);
         if (movement < movement_) {
             std::swap(difference_, relit_difference_);
             offset_ = offset;
@@ -356,35 +338,24 @@ void DifferenceStage::compute(const cv::Mat& grey, const cv::Mat& previous_grey,
             relit_current_ = true;
         }
     }
-    if (channels || relit_current_) {
-        channel_bins_ = {};
-        for (int y = 0; y < height; ++y) {
-            const std::uint8_t* color_before = previous_color.ptr<std::uint8_t>(y);
-            if (relit_current_) {
-                // Flicker changes every channel alike: the grey image's gains serve them. The
-                // colour validation reads this image too (previous_color_relit()).
-                scale(color_before, row_gains_[y], relit_.ptr<std::uint8_t>(y), 3 * width);
-                color_before = relit_.ptr<std::uint8_t>(y);
-            }
-            if (!channels) continue;
-            absolute_difference(color.ptr<std::uint8_t>(y), color_before, channel_row, 3 * width);
-            // The max of each byte and the next two, contiguous so it vectorizes; pixel x's is
-            // at 3x.
-            for (int i = 0; i + 2 < 3 * width; ++i)
-                strongest[i] = std::max({channel_row[i], channel_row[i + 1], channel_row[i + 2]});
-            count_every_third(channel_bins_, strongest, width);
+    if (!channels && !relit_current_) return;
+    smallest = 255;
+    for (int y = 0; y < height; ++y) {
+        const std::uint8_t* color_before = previous_color.ptr<std::uint8_t>(y);
+        if (relit_current_) {
+            // Flicker changes every channel alike: the grey image's gains serve them. The
+            // colour validation reads this image too (previous_color_relit()).
+            scale(color_before, row_gains_[y], relit_.ptr<std::uint8_t>(y), 3 * width);
+            color_before = relit_.ptr<std::uint8_t>(y);
         }
+        if (!channels) continue;
+        smallest = kernels::strongest_channel(color.ptr<std::uint8_t>(y), color_before,
+                                              strongest_.data() + y * width, width, smallest);
     }
     if (channels) {
-        const std::array<int, 256> channel_histogram = total(channel_bins_);
-        movement_ = compensated_sum(channel_histogram, offset_of(channel_histogram, minima_));
-    }
-    const auto offset = static_cast<std::uint8_t>(offset_);
-    // An offset of 0 (a still scene under still light, most of all) leaves every pixel as is.
-    for (int y = 0; y < height && offset != 0; ++y) {
-        std::uint8_t* row = difference_.ptr<std::uint8_t>(y);
-        for (int x = 0; x < width; ++x)
-            row[x] = static_cast<std::uint8_t>(row[x] > offset ? row[x] - offset : 0);
+        const int offset = kernels::distinct_offset(strongest_.data(), pixels, smallest, minima_);
+        movement_ = static_cast<double>(
+            kernels::compensated_sum(strongest_.data(), pixels, static_cast<std::uint8_t>(offset)));
     }
 }
 

@@ -15,8 +15,8 @@
 namespace raypoint::core {
 
 // The brightness compensation of paper 4.1: the largest of the `minima` smallest distinct values
-// present in `difference` (0 when there are fewer distinct values than that is impossible: then
-// the largest present value). Histogram based, so O(pixels) and no sorting.
+// present in `difference` (when fewer values are distinct, the largest present value). At most
+// `minima` minimum passes over the pixels, no sorting.
 int brightness_offset(const cv::Mat& difference, int minima) noexcept;
 
 class DifferenceStage {
@@ -52,10 +52,9 @@ class DifferenceStage {
     bool rows_;      // Compensation::rows: each band of rows' light ratio divided out first
     int minima_;
     cv::Mat difference_;
-    std::vector<std::uint8_t> channel_row_;  // a row of channel differences, then their maxima
-    // Histograms of the grey and the per-channel difference, four interleaved partial ones each.
-    std::array<std::array<int, 256>, 4> grey_bins_{};
-    std::array<std::array<int, 256>, 4> channel_bins_{};
+    // Each pixel's largest channel difference, a row of the working width after another (the
+    // pixels of a row in an order of their own: only the offset and the sum are read).
+    std::vector<std::uint8_t> strongest_;
     // Compensation::rows: each band's and each row's light ratio, current / previous, in 1/256,
     // and 2^24 / value, which turns the ratio's division into a multiplication.
     std::vector<int> band_gains_;
