@@ -22,6 +22,15 @@ constexpr std::array<Step, 4> neighbour_steps{{{-1, 0}, {1, 0}, {0, -1}, {0, 1}}
 constexpr std::array<Step, 8> fill_steps{
     {{-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}}};
 
+// A diagonal step the four neighbours could not make crosses a one-pixel diagonal line of edge
+// pixels; it joins the two sides only where they have one colour (a finger's middle and the
+// palm), not where an outline's gap runs between a hand and the wall behind it. `a` and `b`
+// are BGR pixels.
+bool same_color(const std::uint8_t* a, const std::uint8_t* b, int tolerance) noexcept {
+    const int distance = std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
+    return distance <= tolerance;
+}
+
 }  // namespace
 
 RasterEstimator::RasterEstimator(const EstimatorSettings& settings) : RayEstimatorBase(settings) {}
@@ -29,7 +38,8 @@ RasterEstimator::RasterEstimator(const EstimatorSettings& settings) : RayEstimat
 void RasterEstimator::resize(const cv::Mat& edges) {
     // The lists index the old size's pixels and blocks.
     selected_.clear();
-    ray_list_.clear();
+    ray_count_ = 0;
+    queued_ = 0;
     width_ = edges.cols;
     height_ = edges.rows;
     const int m = settings_.block_size;
@@ -46,15 +56,15 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     trace_.blocks.assign(static_cast<std::size_t>(trace_.blocks_wide) * trace_.blocks_high, 0);
     selected_.reserve(trace_.blocks.size());
     ray_pixels_.assign(pixels, 0);
-    ray_list_.reserve(pixels);
+    ray_list_.assign(pixels, cv::Point());
     filled_.assign(pixels, 0);
-    queue_.reserve(pixels);
+    queue_.assign(pixels, cv::Point());
 }
 
 // A pixel's block is selected on the pixel's first visit, so later visits change nothing.
 void RasterEstimator::select_new(unsigned char& visited, int x, int y) noexcept {
     visited = 1;
-    ray_list_.push_back({x, y});
+    ray_list_[ray_count_++] = cv::Point(x, y);
     const int block = block_of_row_[y] * trace_.blocks_wide + block_of_column_[x];
     if (trace_.blocks[block] == 0) {
         trace_.blocks[block] = 1;
@@ -106,9 +116,9 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
     for (const int block : selected_)
         trace_.blocks[block] = 0;
     selected_.clear();
-    for (const cv::Point pixel : ray_list_)
-        ray_pixels_[static_cast<std::size_t>(pixel.y) * width_ + pixel.x] = 0;
-    ray_list_.clear();
+    for (std::size_t i = 0; i < ray_count_; ++i)
+        ray_pixels_[static_cast<std::size_t>(ray_list_[i].y) * width_ + ray_list_[i].x] = 0;
+    ray_count_ = 0;
     const auto visit = [this](int x, int y) { select(x, y); };
     inner = RayCaster::off_edge(edges, inner, settings_.edge_escape);
 
@@ -147,45 +157,77 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
 // starts over restricted to the selected blocks, the region the rays vouch for.
 bool RasterEstimator::fill(const cv::Mat& edges, bool within_blocks, double limit) noexcept {
     std::fill(filled_.begin(), filled_.end(), 0);
-    queue_.clear();
+    const int w = width_;
+    const int h = height_;
+    unsigned char* const filled = filled_.data();
+    cv::Point* const queue = queue_.data();
+    std::size_t count = 0;
     // The seeds come in order of first visit, not row by row: the filled set does not depend on
     // the order, nor does the test against `limit` (the queue only grows, so it exceeds the limit
     // at some point exactly when the whole filled set does), nor the exact sums of refine().
-    for (const cv::Point pixel : ray_list_) {
-        filled_[static_cast<std::size_t>(pixel.y) * width_ + pixel.x] = inside;
-        queue_.push_back(pixel);
+    for (std::size_t i = 0; i < ray_count_; ++i) {
+        const cv::Point pixel = ray_list_[i];
+        filled[static_cast<std::ptrdiff_t>(pixel.y) * w + pixel.x] = inside;
+        queue[count++] = pixel;
     }
     const bool colors = color_ != nullptr && settings_.diagonal_tolerance > 0 &&
                         color_->cols == width_ && color_->rows == height_;
     const std::size_t steps = colors ? fill_steps.size() : neighbour_steps.size();
-    for (std::size_t head = 0; head < queue_.size(); ++head) {
-        if (static_cast<double>(queue_.size()) > limit) return false;
+    const std::uint8_t* const edge = edges.data;
+    const auto edge_stride = static_cast<std::ptrdiff_t>(edges.step[0]);
+    const std::uint8_t* const color = colors ? color_->data : nullptr;
+    const auto color_stride = colors ? static_cast<std::ptrdiff_t>(color_->step[0]) : 0;
+    const int tolerance = settings_.diagonal_tolerance;
+    const unsigned char* const blocks = trace_.blocks.data();
+    const int blocks_wide = trace_.blocks_wide;
+    const int* const block_of_row = block_of_row_.data();
+    const int* const block_of_column = block_of_column_.data();
+    // Each step's offset in filled_, edges and the colour image.
+    std::array<std::ptrdiff_t, fill_steps.size()> filled_offset{};
+    std::array<std::ptrdiff_t, fill_steps.size()> edge_offset{};
+    std::array<std::ptrdiff_t, fill_steps.size()> color_offset{};
+    for (std::size_t s = 0; s < fill_steps.size(); ++s) {
+        filled_offset[s] = static_cast<std::ptrdiff_t>(fill_steps[s].y) * w + fill_steps[s].x;
+        edge_offset[s] = fill_steps[s].y * edge_stride + fill_steps[s].x;
+        color_offset[s] = fill_steps[s].y * color_stride + 3 * fill_steps[s].x;
+    }
+    for (std::size_t head = 0; head < count; ++head) {
+        if (static_cast<double>(count) > limit) {
+            queued_ = count;
+            return false;
+        }
+        const cv::Point pixel = queue[head];
+        const std::ptrdiff_t here = static_cast<std::ptrdiff_t>(pixel.y) * w + pixel.x;
+        const std::ptrdiff_t edge_here = pixel.y * edge_stride + pixel.x;
+        // Off the border every step stays in the image.
+        const bool interior = pixel.x > 0 && pixel.y > 0 && pixel.x < w - 1 && pixel.y < h - 1;
+        // Most pixels are ray pixels amid others: every step would find its pixel reached.
+        if (interior && filled[here - 1] != 0 && filled[here + 1] != 0 && filled[here - w] != 0 &&
+            filled[here + w] != 0 &&
+            (!colors || (filled[here - w - 1] != 0 && filled[here - w + 1] != 0 &&
+                         filled[here + w - 1] != 0 && filled[here + w + 1] != 0))) {
+            continue;
+        }
         for (std::size_t s = 0; s < steps; ++s) {
             const Step step = fill_steps[s];
-            const cv::Point next(queue_[head].x + step.x, queue_[head].y + step.y);
-            if (!contains(next)) continue;
-            const std::size_t index = static_cast<std::size_t>(next.y) * width_ + next.x;
-            if (filled_[index] != 0 || edges.ptr<std::uint8_t>(next.y)[next.x] != 0) continue;
-            if (s >= neighbour_steps.size() && !same_color(queue_[head], next)) continue;
-            if (within_blocks && trace_.blocks[block_of_row_[next.y] * trace_.blocks_wide +
-                                               block_of_column_[next.x]] == 0) {
+            const cv::Point next(pixel.x + step.x, pixel.y + step.y);
+            if (!interior && !contains(next)) continue;
+            const std::ptrdiff_t index = here + filled_offset[s];
+            if (filled[index] != 0 || edge[edge_here + edge_offset[s]] != 0) continue;
+            if (s >= neighbour_steps.size()) {
+                const std::uint8_t* from = color + pixel.y * color_stride + 3 * pixel.x;
+                if (!same_color(from, from + color_offset[s], tolerance)) continue;
+            }
+            if (within_blocks &&
+                blocks[block_of_row[next.y] * blocks_wide + block_of_column[next.x]] == 0) {
                 continue;
             }
-            filled_[index] = inside;
-            queue_.push_back(next);
+            filled[index] = inside;
+            queue[count++] = next;
         }
     }
+    queued_ = count;
     return true;
-}
-
-// A diagonal step the four neighbours could not make crosses a one-pixel diagonal line of edge
-// pixels; it joins the two sides only where they have one colour (a finger's middle and the
-// palm), not where an outline's gap runs between a hand and the wall behind it.
-bool RasterEstimator::same_color(cv::Point from, cv::Point to) const noexcept {
-    const cv::Vec3b a = color_->ptr<cv::Vec3b>(from.y)[from.x];
-    const cv::Vec3b b = color_->ptr<cv::Vec3b>(to.y)[to.x];
-    const int distance = std::abs(a[0] - b[0]) + std::abs(a[1] - b[1]) + std::abs(a[2] - b[2]);
-    return distance <= settings_.diagonal_tolerance;
 }
 
 // The outline is the ridge of the edge band, not its inner side: from the filled region, climb
@@ -194,25 +236,48 @@ bool RasterEstimator::same_color(cv::Point from, cv::Point to) const noexcept {
 void RasterEstimator::add_edge_band(const cv::Mat& edges, double& area, double& sum_x,
                                     double& sum_y) noexcept {
     constexpr int band_depth = 3;
-    const std::size_t inside_count = queue_.size();
-    for (std::size_t head = 0; head < queue_.size(); ++head) {
-        const cv::Point pixel = queue_[head];
-        const unsigned char here = filled_[static_cast<std::size_t>(pixel.y) * width_ + pixel.x];
+    const int w = width_;
+    const int h = height_;
+    unsigned char* const filled = filled_.data();
+    cv::Point* const queue = queue_.data();
+    std::size_t count = queued_;
+    const std::size_t inside_count = count;
+    const std::uint8_t* const edge = edges.data;
+    const auto edge_stride = static_cast<std::ptrdiff_t>(edges.step[0]);
+    std::array<std::ptrdiff_t, neighbour_steps.size()> filled_offset{};
+    std::array<std::ptrdiff_t, neighbour_steps.size()> edge_offset{};
+    for (std::size_t s = 0; s < neighbour_steps.size(); ++s) {
+        filled_offset[s] =
+            static_cast<std::ptrdiff_t>(neighbour_steps[s].y) * w + neighbour_steps[s].x;
+        edge_offset[s] = neighbour_steps[s].y * edge_stride + neighbour_steps[s].x;
+    }
+    for (std::size_t head = 0; head < count; ++head) {
+        const cv::Point pixel = queue[head];
+        const std::ptrdiff_t index_here = static_cast<std::ptrdiff_t>(pixel.y) * w + pixel.x;
+        const std::ptrdiff_t edge_here = pixel.y * edge_stride + pixel.x;
+        const unsigned char here = filled[index_here];
         const int depth = here == inside ? 0 : here - band;
-        const int strength = here == inside ? 0 : edges.ptr<std::uint8_t>(pixel.y)[pixel.x];
+        const int strength = here == inside ? 0 : edge[edge_here];
+        const bool interior = pixel.x > 0 && pixel.y > 0 && pixel.x < w - 1 && pixel.y < h - 1;
+        // An inside pixel amid reached ones climbs nowhere, and its ridge flag is not used.
+        if (here == inside && interior && filled[index_here - 1] != 0 &&
+            filled[index_here + 1] != 0 && filled[index_here - w] != 0 &&
+            filled[index_here + w] != 0) {
+            continue;
+        }
         bool ridge = true;
-        for (const Step step : neighbour_steps) {
-            const cv::Point next(pixel.x + step.x, pixel.y + step.y);
-            if (!contains(next)) continue;
-            const std::size_t index = static_cast<std::size_t>(next.y) * width_ + next.x;
-            const int next_strength = edges.ptr<std::uint8_t>(next.y)[next.x];
+        for (std::size_t s = 0; s < neighbour_steps.size(); ++s) {
+            const cv::Point next(pixel.x + neighbour_steps[s].x, pixel.y + neighbour_steps[s].y);
+            if (!interior && !contains(next)) continue;
+            const std::ptrdiff_t index = index_here + filled_offset[s];
+            const int next_strength = edge[edge_here + edge_offset[s]];
             if (next_strength > strength && here != inside) ridge = false;
-            if (filled_[index] != 0 || next_strength == 0 || next_strength < strength ||
+            if (filled[index] != 0 || next_strength == 0 || next_strength < strength ||
                 depth >= band_depth) {
                 continue;
             }
-            filled_[index] = static_cast<unsigned char>(band + depth + 1);
-            queue_.push_back(next);
+            filled[index] = static_cast<unsigned char>(band + depth + 1);
+            queue[count++] = next;
         }
         if (head < inside_count) continue;
         const double weight = ridge ? 0.5 : 1.0;
@@ -220,6 +285,7 @@ void RasterEstimator::add_edge_band(const cv::Mat& edges, double& area, double& 
         sum_x += weight * pixel.x;
         sum_y += weight * pixel.y;
     }
+    queued_ = count;
 }
 
 void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept {
@@ -229,16 +295,16 @@ void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept 
     if (!fill(edges, false, limit)) {
         fill(edges, true, static_cast<double>(filled_.size()));
     }
-    last_fill_ = queue_.size();
+    last_fill_ = queued_;
     double area = 0.0;
     double sum_x = 0.0;
     double sum_y = 0.0;
-    for (const cv::Point pixel : queue_) {
-        sum_x += pixel.x;
-        sum_y += pixel.y;
+    for (std::size_t i = 0; i < queued_; ++i) {
+        sum_x += queue_[i].x;
+        sum_y += queue_[i].y;
     }
-    area = static_cast<double>(queue_.size());
-    const std::size_t inside_count = queue_.size();
+    area = static_cast<double>(queued_);
+    const std::size_t inside_count = queued_;
     add_edge_band(edges, area, sum_x, sum_y);
     if (area <= 0.0) return;
     estimate.area = area;
