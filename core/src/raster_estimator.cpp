@@ -39,6 +39,7 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     // The lists index the old size's pixels and blocks.
     selected_.clear();
     ray_count_ = 0;
+    blocks_listed_ = 0;
     queued_ = 0;
     width_ = edges.cols;
     height_ = edges.rows;
@@ -61,14 +62,17 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     queue_.assign(pixels, cv::Point());
 }
 
-// A pixel's block is selected on the pixel's first visit, so later visits change nothing.
-void RasterEstimator::select_new(unsigned char& visited, int x, int y) noexcept {
-    visited = 1;
-    ray_list_[ray_count_++] = cv::Point(x, y);
-    const int block = block_of_row_[y] * trace_.blocks_wide + block_of_column_[x];
-    if (trace_.blocks[block] == 0) {
-        trace_.blocks[block] = 1;
-        selected_.push_back(block);
+// A pixel's block is selected for the pixel's first visit, so later visits change nothing. The
+// blocks of the pixels listed since the last call are selected in order of first visit, the
+// order selecting them during the casts would give.
+void RasterEstimator::select_blocks() noexcept {
+    for (; blocks_listed_ < ray_count_; ++blocks_listed_) {
+        const cv::Point pixel = ray_list_[blocks_listed_];
+        const int block = block_of_row_[pixel.y] * trace_.blocks_wide + block_of_column_[pixel.x];
+        if (trace_.blocks[block] == 0) {
+            trace_.blocks[block] = 1;
+            selected_.push_back(block);
+        }
     }
 }
 
@@ -119,7 +123,18 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
     for (std::size_t i = 0; i < ray_count_; ++i)
         ray_pixels_[static_cast<std::size_t>(ray_list_[i].y) * width_ + ray_list_[i].x] = 0;
     ray_count_ = 0;
-    const auto visit = [this](int x, int y) { select(x, y); };
+    blocks_listed_ = 0;
+    // Called for every pixel every ray runs through (thousands a frame, most of them again): a
+    // repeated pixel returns at once, a new one is listed, its block selected after the casts
+    // (select_blocks()). No call: a call would have the caster's registers saved around it.
+    unsigned char* const ray_pixels = ray_pixels_.data();
+    const std::size_t width = static_cast<std::size_t>(width_);
+    const auto visit = [this, ray_pixels, width](int x, int y) {
+        unsigned char& visited = ray_pixels[static_cast<std::size_t>(y) * width + x];
+        if (visited != 0) return;
+        visited = 1;
+        ray_list_[ray_count_++] = cv::Point(x, y);
+    };
     inner = RayCaster::off_edge(edges, inner, settings_.edge_escape);
 
     Estimate result;
@@ -127,6 +142,7 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
     for (int i = 0; i < settings_.max_iterations; ++i) {
         trace_.rays.clear();
         cast_levels(caster_, edges, inner, settings_.recasts, hits_, scratch_, &trace_.rays, visit);
+        select_blocks();
         result.centroid = block_centroid();
         const cv::Point2f walked = RayCaster::walk(edges, inner, result.centroid);
         relocation_.clear();
@@ -139,6 +155,7 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
         inner = moved;
         if (settled) break;
     }
+    select_blocks();
     result.centroid = block_centroid();
     result.area = block_area();
     result.inner = inner;

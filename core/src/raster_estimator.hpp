@@ -17,12 +17,7 @@ class RasterEstimator final : public RayEstimatorBase {
 
   private:
     void resize(const cv::Mat& edges);
-    // Called for every pixel every ray runs through (thousands a frame, most of them again).
-    void select(int x, int y) noexcept {
-        unsigned char& visited = ray_pixels_[static_cast<std::size_t>(y) * width_ + x];
-        if (visited == 0) select_new(visited, x, y);
-    }
-    void select_new(unsigned char& visited, int x, int y) noexcept;
+    void select_blocks() noexcept;
     cv::Point2f block_centroid() const noexcept;
     double block_area() const noexcept;
     // AreaMode::refined: area and centroid of the region the rays ran through, grown up to the
@@ -54,6 +49,7 @@ class RasterEstimator final : public RayEstimatorBase {
     // unsigned char pointer may alias any member, which would be reloaded after each one.
     std::vector<cv::Point> ray_list_;
     std::size_t ray_count_ = 0;
+    std::size_t blocks_listed_ = 0;      // the first this many have their blocks selected
     std::vector<int> selected_;          // indices of selected blocks, in selection order
     std::vector<unsigned char> filled_;  // refine(): 0 not reached, inside, or band + depth
     // refine(): the first queued_ slots are the reached pixels, in order of reaching; a pixel is
