@@ -31,6 +31,38 @@ bool same_color(const std::uint8_t* a, const std::uint8_t* b, int tolerance) noe
     return distance <= tolerance;
 }
 
+// The image's size, and the pixels all eight neighbours of which are in it: x - 1 < w - 2 and
+// y - 1 < h - 2, unsigned.
+struct Bounds {
+    int w;
+    int h;
+    unsigned inner_w = static_cast<unsigned>(std::max(w - 2, 0));
+    unsigned inner_h = static_cast<unsigned>(std::max(h - 2, 0));
+};
+
+// Calls step(s) for each neighbour_steps[s] from `pixel` that stays in the image, in that order.
+// Off the border every step does, and the calls are spelled out: each step's offsets are
+// constants.
+template <typename StepTo>
+void each_neighbour(cv::Point pixel, Bounds bounds, const StepTo& step) noexcept {
+    if (static_cast<unsigned>(pixel.x - 1) < bounds.inner_w &&
+        static_cast<unsigned>(pixel.y - 1) < bounds.inner_h) {
+        step(0);
+        step(1);
+        step(2);
+        step(3);
+        return;
+    }
+    for (std::size_t s = 0; s < neighbour_steps.size(); ++s) {
+        const int x = pixel.x + neighbour_steps[s].x;
+        const int y = pixel.y + neighbour_steps[s].y;
+        if (static_cast<unsigned>(x) < static_cast<unsigned>(bounds.w) &&
+            static_cast<unsigned>(y) < static_cast<unsigned>(bounds.h)) {
+            step(s);
+        }
+    }
+}
+
 }  // namespace
 
 RasterEstimator::RasterEstimator(const EstimatorSettings& settings) : RayEstimatorBase(settings) {}
@@ -130,7 +162,9 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
     unsigned char* const ray_pixels = ray_pixels_.data();
     const std::size_t width = static_cast<std::size_t>(width_);
     const auto visit = [this, ray_pixels, width](int x, int y) {
-        unsigned char& visited = ray_pixels[static_cast<std::size_t>(y) * width + x];
+        // x and y are in the image: the casts zero-extend.
+        unsigned char& visited =
+            ray_pixels[std::size_t{static_cast<unsigned>(y)} * width + static_cast<unsigned>(x)];
         if (visited != 0) return;
         visited = 1;
         ray_list_[ray_count_++] = cv::Point(x, y);
@@ -259,6 +293,7 @@ void RasterEstimator::add_edge_band(const cv::Mat& edges, double& area, double& 
     cv::Point* const queue = queue_.data();
     std::size_t count = queued_;
     const std::size_t inside_count = count;
+    const Bounds bounds{w, h};
     const std::uint8_t* const edge = edges.data;
     const auto edge_stride = static_cast<std::ptrdiff_t>(edges.step[0]);
     std::array<std::ptrdiff_t, neighbour_steps.size()> filled_offset{};
@@ -268,35 +303,40 @@ void RasterEstimator::add_edge_band(const cv::Mat& edges, double& area, double& 
             static_cast<std::ptrdiff_t>(neighbour_steps[s].y) * w + neighbour_steps[s].x;
         edge_offset[s] = neighbour_steps[s].y * edge_stride + neighbour_steps[s].x;
     }
-    for (std::size_t head = 0; head < count; ++head) {
+    // The inside pixels climb one step into the band: to a neighbour not reached that is an
+    // edge (strength > 0 >= the inside's strength 0, at depth 0).
+    for (std::size_t head = 0; head < inside_count; ++head) {
         const cv::Point pixel = queue[head];
         const std::ptrdiff_t index_here = static_cast<std::ptrdiff_t>(pixel.y) * w + pixel.x;
         const std::ptrdiff_t edge_here = pixel.y * edge_stride + pixel.x;
-        const unsigned char here = filled[index_here];
-        const int depth = here == inside ? 0 : here - band;
-        const int strength = here == inside ? 0 : edge[edge_here];
-        const bool interior = pixel.x > 0 && pixel.y > 0 && pixel.x < w - 1 && pixel.y < h - 1;
-        // An inside pixel amid reached ones climbs nowhere, and its ridge flag is not used.
-        if (here == inside && interior && filled[index_here - 1] != 0 &&
-            filled[index_here + 1] != 0 && filled[index_here - w] != 0 &&
-            filled[index_here + w] != 0) {
-            continue;
-        }
-        bool ridge = true;
-        for (std::size_t s = 0; s < neighbour_steps.size(); ++s) {
-            const cv::Point next(pixel.x + neighbour_steps[s].x, pixel.y + neighbour_steps[s].y);
-            if (!interior && !contains(next)) continue;
+        const auto enter = [&](std::size_t s) {
             const std::ptrdiff_t index = index_here + filled_offset[s];
+            if (filled[index] != 0 || edge[edge_here + edge_offset[s]] == 0) return;
+            filled[index] = band + 1;
+            queue[count++] = {pixel.x + neighbour_steps[s].x, pixel.y + neighbour_steps[s].y};
+        };
+        each_neighbour(pixel, bounds, enter);
+    }
+    // The band's pixels climb on while the strength does not fall, and count.
+    for (std::size_t head = inside_count; head < count; ++head) {
+        const cv::Point pixel = queue[head];
+        const std::ptrdiff_t index_here = static_cast<std::ptrdiff_t>(pixel.y) * w + pixel.x;
+        const std::ptrdiff_t edge_here = pixel.y * edge_stride + pixel.x;
+        const int depth = filled[index_here] - band;
+        const int strength = edge[edge_here];
+        bool ridge = true;
+        const auto climb = [&](std::size_t s) {
             const int next_strength = edge[edge_here + edge_offset[s]];
-            if (next_strength > strength && here != inside) ridge = false;
+            if (next_strength > strength) ridge = false;
+            const std::ptrdiff_t index = index_here + filled_offset[s];
             if (filled[index] != 0 || next_strength == 0 || next_strength < strength ||
                 depth >= band_depth) {
-                continue;
+                return;
             }
             filled[index] = static_cast<unsigned char>(band + depth + 1);
-            queue[count++] = next;
-        }
-        if (head < inside_count) continue;
+            queue[count++] = {pixel.x + neighbour_steps[s].x, pixel.y + neighbour_steps[s].y};
+        };
+        each_neighbour(pixel, bounds, climb);
         const double weight = ridge ? 0.5 : 1.0;
         area += weight;
         sum_x += weight * pixel.x;

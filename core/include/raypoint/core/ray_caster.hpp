@@ -32,7 +32,7 @@ class RayCaster {
     // taken by value: the copy's captures stay in registers through the steps.
     template <typename Visit>
     void cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHit>& hits,
-              Visit&& visit) const noexcept;
+              Visit visit) const noexcept;
 
     void cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHit>& hits) const noexcept {
         cast(edges, origin, hits, [](int, int) {});
@@ -60,7 +60,7 @@ class RayCaster {
 
 template <typename Visit>
 void RayCaster::cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHit>& hits,
-                     Visit&& visit) const noexcept {
+                     Visit visit) const noexcept {
     // Everything the steps read is local: `visit` may store through a byte pointer, which could
     // alias any member and would have them reloaded at every step.
     const auto width = static_cast<unsigned>(edges.cols);
@@ -85,29 +85,25 @@ void RayCaster::cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHi
     for (std::size_t r = 0; r < rays; ++r) {
         // Float positions stepped by adding d and rounded at each step, as cv::Point2f's +
         // does: the pixels a ray visits depend on those roundings.
-        const float dx = directions[r].x;
-        const float dy = directions[r].y;
-        float px = origin.x;
-        float py = origin.y;
+        const cv::Point2f d = directions[r];
+        cv::Point2f position = origin;
+        cv::Point2f next;  // where the ray stopped: an edge pixel, or outside the image
         int steps = 0;
         int strength = 0;  // stays 0 when the ray leaves the image
         for (;;) {
-            const float next_x = px + dx;
-            const float next_y = py + dy;
-            const int x = cvRound(next_x);
-            const int y = cvRound(next_y);
-            if (static_cast<unsigned>(x) >= width || static_cast<unsigned>(y) >= height) break;
-            strength = data[static_cast<std::size_t>(y) * stride + x];
+            next = position + d;
+            const auto x = static_cast<unsigned>(cvRound(next.x));
+            const auto y = static_cast<unsigned>(cvRound(next.y));
+            if (x >= width || y >= height) break;
+            strength = data[std::size_t{y} * stride + x];
             if (strength != 0) break;
-            visit(x, y);
-            px = next_x;
-            py = next_y;
+            visit(static_cast<int>(x), static_cast<int>(y));
+            position = next;
             ++steps;
         }
         // No edge ahead (the ray left the image): the hit is the last pixel itself.
-        const float ridge =
-            strength == 0 ? 0.0F : ridge_steps(edges, {px + dx, py + dy}, strength, {dx, dy});
-        hits.push_back({{px, py}, (static_cast<float>(steps) + ridge) * step_lengths[r]});
+        const float ridge = strength == 0 ? 0.0F : ridge_steps(edges, next, strength, d);
+        hits.push_back({position, (static_cast<float>(steps) + ridge) * step_lengths[r]});
     }
 }
 
