@@ -88,7 +88,9 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     const auto pixels = static_cast<std::size_t>(width_) * height_;
     trace_.blocks.assign(static_cast<std::size_t>(trace_.blocks_wide) * trace_.blocks_high, 0);
     selected_.reserve(trace_.blocks.size());
-    ray_pixels_.assign(pixels, 0);
+    // Indexed like the edge image's bytes (RayCaster::cast's offsets), rows `edges.step` apart.
+    ray_pitch_ = edges.step[0];
+    ray_pixels_.assign(ray_pitch_ * static_cast<std::size_t>(height_), 0);
     ray_list_.assign(pixels, cv::Point());
     filled_.assign(pixels, 0);
     queue_.assign(pixels, cv::Point());
@@ -141,7 +143,7 @@ double RasterEstimator::block_area() const noexcept {
 }
 
 Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcept {
-    if (edges.cols != width_ || edges.rows != height_) {
+    if (edges.cols != width_ || edges.rows != height_ || edges.step[0] != ray_pitch_) {
         try {
             resize(edges);
         } catch (...) {
@@ -153,18 +155,15 @@ Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noex
         trace_.blocks[block] = 0;
     selected_.clear();
     for (std::size_t i = 0; i < ray_count_; ++i)
-        ray_pixels_[static_cast<std::size_t>(ray_list_[i].y) * width_ + ray_list_[i].x] = 0;
+        ray_pixels_[static_cast<std::size_t>(ray_list_[i].y) * ray_pitch_ + ray_list_[i].x] = 0;
     ray_count_ = 0;
     blocks_listed_ = 0;
     // Called for every pixel every ray runs through (thousands a frame, most of them again): a
     // repeated pixel returns at once, a new one is listed, its block selected after the casts
     // (select_blocks()). No call: a call would have the caster's registers saved around it.
     unsigned char* const ray_pixels = ray_pixels_.data();
-    const std::size_t width = static_cast<std::size_t>(width_);
-    const auto visit = [this, ray_pixels, width](int x, int y) {
-        // x and y are in the image: the casts zero-extend.
-        unsigned char& visited =
-            ray_pixels[std::size_t{static_cast<unsigned>(y)} * width + static_cast<unsigned>(x)];
+    const auto visit = [this, ray_pixels](int x, int y, std::size_t offset) {
+        unsigned char& visited = ray_pixels[offset];
         if (visited != 0) return;
         visited = 1;
         ray_list_[ray_count_++] = cv::Point(x, y);

@@ -44,6 +44,7 @@ class RasterEstimator final : public RayEstimatorBase {
     std::vector<int> block_of_column_;
     std::vector<int> block_of_row_;
     std::vector<unsigned char> ray_pixels_;  // 1 where a ray ran through, this frame
+    std::size_t ray_pitch_ = 0;              // ray_pixels_'s row pitch: the edge image's step
     // The same pixels, each once, in order of first visit: the first ray_count_ of one slot a
     // pixel. The lists below are written through local pointers and counts: a store through an
     // unsigned char pointer may alias any member, which would be reloaded after each one.

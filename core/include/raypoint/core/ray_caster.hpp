@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -28,8 +29,9 @@ class RayCaster {
     int rays() const noexcept { return static_cast<int>(directions_.size()); }
 
     // Casts all rays from `origin` over `edges` (CV_8U, non-zero = edge) and appends one hit a
-    // ray. `visit(x, y)` is called for every pixel a ray runs through, origin included. It is
-    // taken by value: the copy's captures stay in registers through the steps.
+    // ray. `visit(x, y)` is called for every pixel a ray runs through, origin included, or
+    // `visit(x, y, offset)` when it takes the pixel's byte offset in `edges` (y * step + x). It
+    // is taken by value: the copy's captures stay in registers through the steps.
     template <typename Visit>
     void cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHit>& hits,
               Visit visit) const noexcept;
@@ -48,9 +50,19 @@ class RayCaster {
     static cv::Point2f off_edge(const cv::Mat& edges, cv::Point2f point, int radius) noexcept;
 
   private:
+    template <typename Visit>
+    static void visit_pixel(Visit& visit, int x, int y, std::size_t offset) noexcept {
+        if constexpr (std::is_invocable_v<Visit&, int, int, std::size_t>) {
+            visit(x, y, offset);
+        } else {
+            visit(x, y);
+        }
+    }
+
     // Steps along `d` to the edge band's ridge, from the last pixel before the band, the band's
     // first pixel being at `first` (one step on) with edge strength `first_strength` (> 0).
-    static float ridge_steps(const cv::Mat& edges, cv::Point2f first, int first_strength,
+    static float ridge_steps(const std::uint8_t* data, std::size_t stride, unsigned width,
+                             unsigned height, cv::Point2f first, int first_strength,
                              cv::Point2f d) noexcept;
 
     // Unit steps along the major axis: each step enters exactly one new row or column.
@@ -78,7 +90,7 @@ void RayCaster::cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHi
             hits.push_back({origin, 0.0F});
         return;
     }
-    visit(origin_x, origin_y);
+    visit_pixel(visit, origin_x, origin_y, static_cast<std::size_t>(origin_y) * stride + origin_x);
     const cv::Point2f* const directions = directions_.data();
     const float* const step_lengths = step_lengths_.data();
     const std::size_t rays = directions_.size();
@@ -95,26 +107,25 @@ void RayCaster::cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHi
             const auto x = static_cast<unsigned>(cvRound(next.x));
             const auto y = static_cast<unsigned>(cvRound(next.y));
             if (x >= width || y >= height) break;
-            strength = data[std::size_t{y} * stride + x];
+            const std::size_t offset = std::size_t{y} * stride + x;
+            strength = data[offset];
             if (strength != 0) break;
-            visit(static_cast<int>(x), static_cast<int>(y));
+            visit_pixel(visit, static_cast<int>(x), static_cast<int>(y), offset);
             position = next;
             ++steps;
         }
         // No edge ahead (the ray left the image): the hit is the last pixel itself.
-        const float ridge = strength == 0 ? 0.0F : ridge_steps(edges, next, strength, d);
+        const float ridge =
+            strength == 0 ? 0.0F : ridge_steps(data, stride, width, height, next, strength, d);
         hits.push_back({position, (static_cast<float>(steps) + ridge) * step_lengths[r]});
     }
 }
 
-inline float RayCaster::ridge_steps(const cv::Mat& edges, cv::Point2f first, int first_strength,
+inline float RayCaster::ridge_steps(const std::uint8_t* data, std::size_t stride, unsigned width,
+                                    unsigned height, cv::Point2f first, int first_strength,
                                     cv::Point2f d) noexcept {
     // An edge band is a few pixels wide; past this the ray has met another structure.
     constexpr int band_limit = 4;
-    const auto width = static_cast<unsigned>(edges.cols);
-    const auto height = static_cast<unsigned>(edges.rows);
-    const std::uint8_t* const data = edges.data;
-    const std::size_t stride = edges.step[0];
     int strongest = first_strength;
     int first_strongest = 1;
     int last_strongest = 1;
