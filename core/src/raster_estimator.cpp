@@ -3,8 +3,12 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <limits>
 
 #include "estimator_common.hpp"
 
@@ -62,6 +66,27 @@ void each_neighbour(cv::Point pixel, Bounds bounds, const StepTo& step) noexcept
         }
     }
 }
+
+// Four bytes from `p`, in memory order.
+std::uint32_t load4(const std::uint8_t* p) noexcept {
+    std::uint32_t word = 0;
+    std::memcpy(&word, p, sizeof word);
+    return word;
+}
+
+// Whether a byte of `word` is zero (exact: a borrow only runs on from a zero byte).
+constexpr bool has_zero_byte(std::uint32_t word) noexcept {
+    return ((word - 0x01010101U) & ~word & 0x80808080U) != 0;
+}
+
+// The byte at memory position `i` of a load4() word set, whatever the byte order.
+constexpr std::uint32_t byte_at(std::size_t i) noexcept {
+    std::array<std::uint8_t, 4> bytes{};
+    bytes[i] = 0xFF;
+    return std::bit_cast<std::uint32_t>(bytes);
+}
+constexpr std::uint32_t first_byte = byte_at(0);
+constexpr std::uint32_t last_byte = byte_at(3);
 
 }  // namespace
 
@@ -220,6 +245,16 @@ bool RasterEstimator::fill(const cv::Mat& edges, bool within_blocks, double limi
         filled[static_cast<std::ptrdiff_t>(pixel.y) * w + pixel.x] = inside;
         queue[count++] = pixel;
     }
+    // count > cap exactly when count > limit: the counts are integers under 2^53, exact in double.
+    std::size_t cap = std::numeric_limits<std::size_t>::max();  // also for a NaN limit
+    if (limit < 0.0) {
+        if (count > 0) {
+            queued_ = count;
+            return false;
+        }
+    } else if (limit < 0x1p53) {
+        cap = static_cast<std::size_t>(limit);
+    }
     const bool colors = color_ != nullptr && settings_.diagonal_tolerance > 0 &&
                         color_->cols == width_ && color_->rows == height_;
     const std::size_t steps = colors ? fill_steps.size() : neighbour_steps.size();
@@ -242,7 +277,7 @@ bool RasterEstimator::fill(const cv::Mat& edges, bool within_blocks, double limi
         color_offset[s] = fill_steps[s].y * color_stride + 3 * fill_steps[s].x;
     }
     for (std::size_t head = 0; head < count; ++head) {
-        if (static_cast<double>(count) > limit) {
+        if (count > cap) {
             queued_ = count;
             return false;
         }
@@ -251,12 +286,20 @@ bool RasterEstimator::fill(const cv::Mat& edges, bool within_blocks, double limi
         const std::ptrdiff_t edge_here = pixel.y * edge_stride + pixel.x;
         // Off the border every step stays in the image.
         const bool interior = pixel.x > 0 && pixel.y > 0 && pixel.x < w - 1 && pixel.y < h - 1;
-        // Most pixels are ray pixels amid others: every step would find its pixel reached.
-        if (interior && filled[here - 1] != 0 && filled[here + 1] != 0 && filled[here - w] != 0 &&
-            filled[here + w] != 0 &&
-            (!colors || (filled[here - w - 1] != 0 && filled[here - w + 1] != 0 &&
-                         filled[here + w - 1] != 0 && filled[here + w + 1] != 0))) {
-            continue;
+        // Most pixels are ray pixels amid others or against the outline: every step would find
+        // its pixel reached, or (the eight steps) an edge. The eight are read four bytes a row,
+        // the byte outside the 3x3 ignored: x - 1 to x + 2 above and on the pixel's row, x - 2
+        // to x + 1 below, all within the images off their border.
+        if (interior) {
+            const unsigned char* const f = filled + here;
+            const std::uint8_t* const e = edge + edge_here;
+            if (colors
+                    ? !has_zero_byte(load4(f - w - 1) | load4(e - edge_stride - 1) | last_byte) &&
+                          !has_zero_byte(load4(f - 1) | load4(e - 1) | last_byte) &&
+                          !has_zero_byte(load4(f + w - 2) | load4(e + edge_stride - 2) | first_byte)
+                    : f[-1] != 0 && f[1] != 0 && f[-w] != 0 && f[w] != 0) {
+                continue;
+            }
         }
         for (std::size_t s = 0; s < steps; ++s) {
             const Step step = fill_steps[s];
