@@ -395,14 +395,17 @@ void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept 
         fill(edges, true, static_cast<double>(filled_.size()));
     }
     last_fill_ = queued_;
-    double area = 0.0;
-    double sum_x = 0.0;
-    double sum_y = 0.0;
+    // Integer sums: each partial sum is an integer under 2^53, so summing in double gives
+    // the same values.
+    std::int64_t inside_x = 0;
+    std::int64_t inside_y = 0;
     for (std::size_t i = 0; i < queued_; ++i) {
-        sum_x += queue_[i].x;
-        sum_y += queue_[i].y;
+        inside_x += queue_[i].x;
+        inside_y += queue_[i].y;
     }
-    area = static_cast<double>(queued_);
+    double area = static_cast<double>(queued_);
+    auto sum_x = static_cast<double>(inside_x);
+    auto sum_y = static_cast<double>(inside_y);
     const std::size_t inside_count = queued_;
     add_edge_band(edges, area, sum_x, sum_y);
     if (area <= 0.0) return;
@@ -419,9 +422,13 @@ void RasterEstimator::keep_extremity(Estimate& estimate, std::size_t inside_coun
     double contact = 0.0;
     double contact_x = 0.0;
     double contact_y = 0.0;
+    // On the border: not x - 1 < w - 2 and y - 1 < h - 2, unsigned.
+    const auto inner_w = static_cast<unsigned>(std::max(width_ - 2, 0));
+    const auto inner_h = static_cast<unsigned>(std::max(height_ - 2, 0));
     for (std::size_t i = 0; i < inside_count; ++i) {
         const cv::Point p = queue_[i];
-        if (p.x == 0 || p.y == 0 || p.x == width_ - 1 || p.y == height_ - 1) {
+        if (static_cast<unsigned>(p.x - 1) >= inner_w ||
+            static_cast<unsigned>(p.y - 1) >= inner_h) {
             contact += 1.0;
             contact_x += p.x;
             contact_y += p.y;
