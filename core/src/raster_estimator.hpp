@@ -17,21 +17,13 @@ class RasterEstimator final : public RayEstimatorBase {
 
   private:
     void resize(const cv::Mat& edges);
-    // Called for every pixel every ray runs through (thousands a frame, most of them again).
-    void select(int x, int y) noexcept {
-        unsigned char& visited = ray_pixels_[static_cast<std::size_t>(y) * width_ + x];
-        if (visited == 0) select_new(visited, x, y);
-    }
-    void select_new(unsigned char& visited, int x, int y) noexcept;
+    void select_blocks() noexcept;
     cv::Point2f block_centroid() const noexcept;
     double block_area() const noexcept;
     // AreaMode::refined: area and centroid of the region the rays ran through, grown up to the
     // outline's ridge (docs/estimators.md).
     void refine(const cv::Mat& edges, Estimate& estimate) noexcept;
     bool fill(const cv::Mat& edges, bool within_blocks, double limit) noexcept;
-    // Whether the fill may step diagonally from `from` to `to` (EstimatorSettings::
-    // diagonal_tolerance).
-    bool same_color(cv::Point from, cv::Point to) const noexcept;
     bool contains(cv::Point pixel) const noexcept {
         // One unsigned comparison an axis: negative coordinates wrap to large ones.
         return static_cast<unsigned>(pixel.x) < static_cast<unsigned>(width_) &&
@@ -52,10 +44,19 @@ class RasterEstimator final : public RayEstimatorBase {
     std::vector<int> block_of_column_;
     std::vector<int> block_of_row_;
     std::vector<unsigned char> ray_pixels_;  // 1 where a ray ran through, this frame
-    std::vector<cv::Point> ray_list_;        // the same pixels, each once, in order of first visit
-    std::vector<int> selected_;              // indices of selected blocks, in selection order
-    std::vector<unsigned char> filled_;      // refine(): 1 = reached
-    std::vector<cv::Point> queue_;           // refine(): reached pixels, in order of reaching
+    std::size_t ray_pitch_ = 0;              // ray_pixels_'s row pitch: the edge image's step
+    // The same pixels, each once, in order of first visit: the first ray_count_ of one slot a
+    // pixel. The lists below are written through local pointers and counts: a store through an
+    // unsigned char pointer may alias any member, which would be reloaded after each one.
+    std::vector<cv::Point> ray_list_;
+    std::size_t ray_count_ = 0;
+    std::size_t blocks_listed_ = 0;      // the first this many have their blocks selected
+    std::vector<int> selected_;          // indices of selected blocks, in selection order
+    std::vector<unsigned char> filled_;  // refine(): 0 not reached, inside, or band + depth
+    // refine(): the first queued_ slots are the reached pixels, in order of reaching; a pixel is
+    // queued at most once, so one slot a pixel always suffices.
+    std::vector<cv::Point> queue_;
+    std::size_t queued_ = 0;
 };
 
 }  // namespace raypoint::core::detail

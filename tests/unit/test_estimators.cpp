@@ -16,6 +16,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
@@ -270,6 +271,53 @@ TEST(RayCaster, VisitsEveryPixelARunsThroughOriginIncluded) {
     });
     EXPECT_EQ(visits, 1 + 4 * 19);
     EXPECT_FALSE(on_edge);
+}
+
+// An edge image whose rows are further apart than its width (a region of a larger image): the
+// offset a visit may take is the pixel's byte offset, y * step + x, and the pixels are those a
+// two-argument visit gets.
+TEST(RayCaster, AnOffsetVisitGetsThePixelsByteOffset) {
+    cv::Mat wide = cv::Mat::zeros(120, 200, CV_8U);
+    const cv::Mat edges = wide(cv::Rect(20, 0, 160, 120));
+    square_outline().copyTo(edges);
+    ASSERT_GT(edges.step[0], static_cast<std::size_t>(edges.cols));
+    std::vector<cv::Point> pixels;
+    std::vector<cv::Point> offset_pixels;
+    std::vector<RayHit> hits;
+    RayCaster(16).cast(edges, {61.3F, 48.6F}, hits,
+                       [&](int x, int y) { pixels.emplace_back(x, y); });
+    std::vector<RayHit> offset_hits;
+    RayCaster(16).cast(edges, {61.3F, 48.6F}, offset_hits, [&](int x, int y, std::size_t offset) {
+        offset_pixels.emplace_back(x, y);
+        EXPECT_EQ(offset, static_cast<std::size_t>(y) * edges.step[0] + x);
+        EXPECT_EQ(edges.data[offset], 0);
+    });
+    EXPECT_EQ(offset_pixels, pixels);
+    ASSERT_EQ(offset_hits.size(), hits.size());
+    for (std::size_t i = 0; i < hits.size(); ++i) {
+        EXPECT_EQ(offset_hits[i].point, hits[i].point);
+        EXPECT_EQ(offset_hits[i].length, hits[i].length);
+    }
+}
+
+// The raster estimator marks the rays' pixels by their offset in the edge image: on a region of
+// a larger image it estimates exactly what it does on a copy with rows one width apart.
+TEST(RasterBlocks, ARegionOfALargerImageGivesTheSameEstimate) {
+    const test::Hand hand = test::hand();
+    cv::Mat wide = cv::Mat::zeros(hand.shape.edges.rows, hand.shape.edges.cols + 24, CV_8U);
+    const cv::Mat region = wide(cv::Rect(8, 0, hand.shape.edges.cols, hand.shape.edges.rows));
+    hand.shape.edges.copyTo(region);
+    ASSERT_TRUE(hand.shape.edges.isContinuous());
+    auto raster = make(EstimatorKind::raster);
+    const Estimate continuous = raster->estimate(hand.shape.edges, hand.palm);
+    const Estimate in_region = raster->estimate(region, hand.palm);
+    const Estimate again = raster->estimate(hand.shape.edges, hand.palm);
+    for (const Estimate& e : {in_region, again}) {
+        EXPECT_EQ(e.centroid, continuous.centroid);
+        EXPECT_EQ(e.area, continuous.area);
+        EXPECT_EQ(e.inner, continuous.inner);
+        EXPECT_EQ(e.iterations, continuous.iterations);
+    }
 }
 
 TEST(RayCaster, OriginOnAnEdgeOrOutsideGivesZeroLengthRays) {

@@ -2,6 +2,9 @@
 #pragma once
 // Ray casting on a binary edge image: the primitive under all four estimators (paper 3.1-3.4).
 
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -26,10 +29,12 @@ class RayCaster {
     int rays() const noexcept { return static_cast<int>(directions_.size()); }
 
     // Casts all rays from `origin` over `edges` (CV_8U, non-zero = edge) and appends one hit a
-    // ray. `visit(x, y)` is called for every pixel a ray runs through, origin included.
+    // ray. `visit(x, y)` is called for every pixel a ray runs through, origin included, or
+    // `visit(x, y, offset)` when it takes the pixel's byte offset in `edges` (y * step + x). It
+    // is taken by value: the copy's captures stay in registers through the steps.
     template <typename Visit>
     void cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHit>& hits,
-              Visit&& visit) const noexcept;
+              Visit visit) const noexcept;
 
     void cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHit>& hits) const noexcept {
         cast(edges, origin, hits, [](int, int) {});
@@ -45,9 +50,20 @@ class RayCaster {
     static cv::Point2f off_edge(const cv::Mat& edges, cv::Point2f point, int radius) noexcept;
 
   private:
-    // Steps from `from` (the last pixel before an edge) along `d` to the edge band's ridge; 0
-    // when there is no edge ahead (the ray left the image).
-    static float ridge_steps(const cv::Mat& edges, cv::Point2f from, cv::Point2f d) noexcept;
+    template <typename Visit>
+    static void visit_pixel(Visit& visit, int x, int y, std::size_t offset) noexcept {
+        if constexpr (std::is_invocable_v<Visit&, int, int, std::size_t>) {
+            visit(x, y, offset);
+        } else {
+            visit(x, y);
+        }
+    }
+
+    // Steps along `d` to the edge band's ridge, from the last pixel before the band, the band's
+    // first pixel being at `first` (one step on) with edge strength `first_strength` (> 0).
+    static float ridge_steps(const std::uint8_t* data, std::size_t stride, unsigned width,
+                             unsigned height, cv::Point2f first, int first_strength,
+                             cv::Point2f d) noexcept;
 
     // Unit steps along the major axis: each step enters exactly one new row or column.
     std::vector<cv::Point2f> directions_;
@@ -56,54 +72,73 @@ class RayCaster {
 
 template <typename Visit>
 void RayCaster::cast(const cv::Mat& edges, cv::Point2f origin, std::vector<RayHit>& hits,
-                     Visit&& visit) const noexcept {
-    const int width = edges.cols;
-    const int height = edges.rows;
+                     Visit visit) const noexcept {
+    // Everything the steps read is local: `visit` may store through a byte pointer, which could
+    // alias any member and would have them reloaded at every step.
+    const auto width = static_cast<unsigned>(edges.cols);
+    const auto height = static_cast<unsigned>(edges.rows);
+    const std::uint8_t* const data = edges.data;
+    const std::size_t stride = edges.step[0];
     const int origin_x = cvRound(origin.x);
     const int origin_y = cvRound(origin.y);
-    const bool origin_inside = origin_x >= 0 && origin_y >= 0 && origin_x < width &&
-                               origin_y < height &&
-                               edges.ptr<std::uint8_t>(origin_y)[origin_x] == 0;
-    if (origin_inside) visit(origin_x, origin_y);
-    for (std::size_t r = 0; r < directions_.size(); ++r) {
-        if (!origin_inside) {
+    // One unsigned comparison an axis: negative coordinates wrap to large ones.
+    const bool origin_inside = static_cast<unsigned>(origin_x) < width &&
+                               static_cast<unsigned>(origin_y) < height &&
+                               data[static_cast<std::size_t>(origin_y) * stride + origin_x] == 0;
+    if (!origin_inside) {
+        for (std::size_t r = 0; r < directions_.size(); ++r)
             hits.push_back({origin, 0.0F});
-            continue;
-        }
-        const cv::Point2f d = directions_[r];
+        return;
+    }
+    visit_pixel(visit, origin_x, origin_y, static_cast<std::size_t>(origin_y) * stride + origin_x);
+    const cv::Point2f* const directions = directions_.data();
+    const float* const step_lengths = step_lengths_.data();
+    const std::size_t rays = directions_.size();
+    for (std::size_t r = 0; r < rays; ++r) {
+        // Float positions stepped by adding d and rounded at each step, as cv::Point2f's +
+        // does: the pixels a ray visits depend on those roundings.
+        const cv::Point2f d = directions[r];
         cv::Point2f position = origin;
+        cv::Point2f next;  // where the ray stopped: an edge pixel, or outside the image
         int steps = 0;
+        int strength = 0;  // stays 0 when the ray leaves the image
         for (;;) {
-            const cv::Point2f next = position + d;
-            const int x = cvRound(next.x);
-            const int y = cvRound(next.y);
-            if (x < 0 || y < 0 || x >= width || y >= height || edges.ptr<std::uint8_t>(y)[x] != 0) {
-                break;
-            }
-            visit(x, y);
+            next = position + d;
+            const auto x = static_cast<unsigned>(cvRound(next.x));
+            const auto y = static_cast<unsigned>(cvRound(next.y));
+            if (x >= width || y >= height) break;
+            const std::size_t offset = std::size_t{y} * stride + x;
+            strength = data[offset];
+            if (strength != 0) break;
+            visit_pixel(visit, static_cast<int>(x), static_cast<int>(y), offset);
             position = next;
             ++steps;
         }
-        const float ridge = ridge_steps(edges, position, d);
-        hits.push_back({position, (static_cast<float>(steps) + ridge) * step_lengths_[r]});
+        // No edge ahead (the ray left the image): the hit is the last pixel itself.
+        const float ridge =
+            strength == 0 ? 0.0F : ridge_steps(data, stride, width, height, next, strength, d);
+        hits.push_back({position, (static_cast<float>(steps) + ridge) * step_lengths[r]});
     }
 }
 
-inline float RayCaster::ridge_steps(const cv::Mat& edges, cv::Point2f from,
+inline float RayCaster::ridge_steps(const std::uint8_t* data, std::size_t stride, unsigned width,
+                                    unsigned height, cv::Point2f first, int first_strength,
                                     cv::Point2f d) noexcept {
     // An edge band is a few pixels wide; past this the ray has met another structure.
     constexpr int band_limit = 4;
-    int strongest = 0;
-    int first_strongest = 0;
-    int last_strongest = 0;
-    int previous = 0;
-    cv::Point2f position = from;
-    for (int k = 1; k <= band_limit; ++k) {
-        position += d;
-        const int x = cvRound(position.x);
-        const int y = cvRound(position.y);
-        if (x < 0 || y < 0 || x >= edges.cols || y >= edges.rows) break;
-        const int strength = edges.ptr<std::uint8_t>(y)[x];
+    int strongest = first_strength;
+    int first_strongest = 1;
+    int last_strongest = 1;
+    int previous = first_strength;
+    float px = first.x;
+    float py = first.y;
+    for (int k = 2; k <= band_limit; ++k) {
+        px += d.x;
+        py += d.y;
+        const int x = cvRound(px);
+        const int y = cvRound(py);
+        if (static_cast<unsigned>(x) >= width || static_cast<unsigned>(y) >= height) break;
+        const int strength = data[static_cast<std::size_t>(y) * stride + x];
         if (strength == 0 || strength < previous) break;  // out of the band, or past the ridge
         if (strength > strongest) {
             strongest = strength;
