@@ -201,18 +201,20 @@ RAYPOINT_AVX2 void store_planar_eight(const FilterRow& row, int x, __m256i plana
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out.color + x * 3), _mm256_castsi256_si128(bytes));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out.color + x * 3 + 12),
                      _mm256_extracti128_si256(bytes, 1));
-    // Grey from the clamped bytes, widened back to 32-bit lanes in pixel order.
-    const __m256i zero = _mm256_setzero_si256();
-    const __m256i words = _mm256_unpacklo_epi8(planar, zero);  // B0-3 G0-3 per lane
-    const __m256i red = _mm256_unpackhi_epi8(planar, zero);    // R0-3 R0-3 per lane
-    const __m256i blue32 = _mm256_unpacklo_epi16(words, zero);
-    const __m256i green32 = _mm256_unpackhi_epi16(words, zero);
-    const __m256i red32 = _mm256_unpacklo_epi16(red, zero);
+    // Grey from the clamped bytes in 32-bit lanes in pixel order: B and G as 16-bit pairs and R
+    // alone, each pair's products summed by one vpmaddwd (the weights fit 16 bits).
+    const __m256i blue_green_words = _mm256_shuffle_epi8(
+        planar, _mm256_setr_epi8(0, -1, 4, -1, 1, -1, 5, -1, 2, -1, 6, -1, 3, -1, 7, -1, 0, -1, 4,
+                                 -1, 1, -1, 5, -1, 2, -1, 6, -1, 3, -1, 7, -1));
+    const __m256i red_words = _mm256_shuffle_epi8(
+        planar, _mm256_setr_epi8(8, -1, -1, -1, 9, -1, -1, -1, 10, -1, -1, -1, 11, -1, -1, -1, 8,
+                                 -1, -1, -1, 9, -1, -1, -1, 10, -1, -1, -1, 11, -1, -1, -1));
     __m256i grey = _mm256_add_epi32(
-        _mm256_add_epi32(_mm256_mullo_epi32(blue32, _mm256_set1_epi32(grey_weight_b)),
-                         _mm256_mullo_epi32(green32, _mm256_set1_epi32(grey_weight_g))),
-        _mm256_add_epi32(_mm256_mullo_epi32(red32, _mm256_set1_epi32(grey_weight_r)),
-                         _mm256_set1_epi32(1 << (grey_shift - 1))));
+        _mm256_add_epi32(
+            _mm256_madd_epi16(blue_green_words,
+                              _mm256_set1_epi32((grey_weight_g << 16) | grey_weight_b)),
+            _mm256_madd_epi16(red_words, _mm256_set1_epi32(grey_weight_r))),
+        _mm256_set1_epi32(1 << (grey_shift - 1)));
     grey = _mm256_srli_epi32(grey, grey_shift);
     const __m256i grey_last =
         _mm256_setr_epi8(-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, 0, 4, 8, 12, -1, -1, -1,
