@@ -62,8 +62,10 @@ void store_four_bgr(const FilterRow& row, int x, __m128i low, __m128i high) noex
 // column to spare on the right, so the 4th byte is inside the frame.
 int filter_bgr_sse2(const FilterRow& row) noexcept {
     const __m128i zero = _mm_setzero_si128();
+    const std::uint8_t* fetch = row.fetch;
     int x = row.begin;
     for (; x + 4 <= row.end && x + 4 < row.width; x += 4) {
+        fetch = prefetch_lines(row, fetch, row.fetch_lines);
         const int* centre = row.centre_bytes + x;
         __m128i low = zero;   // pixels x, x+1
         __m128i high = zero;  // pixels x+2, x+3
@@ -76,6 +78,7 @@ int filter_bgr_sse2(const FilterRow& row) noexcept {
         }
         store_four_bgr(row, x, low, high);
     }
+    prefetch_lines(row, fetch, all_lines);
     return x;
 }
 
@@ -84,8 +87,10 @@ int filter_bgr_sse2(const FilterRow& row) noexcept {
 // end.
 int filter_yuyv_sse2(const FilterRow& row) noexcept {
     const __m128i zero = _mm_setzero_si128();
+    const std::uint8_t* fetch = row.fetch;
     int x = row.begin;
     for (; x + 4 <= row.end; x += 4) {
+        fetch = prefetch_lines(row, fetch, row.fetch_lines);
         const int* centre = row.centre_bytes + x;
         __m128i even_low = zero, even_high = zero, odd_low = zero, odd_high = zero;
         for (int t = 0; t < poisson_disk_tap_count; ++t) {
@@ -114,6 +119,7 @@ int filter_yuyv_sse2(const FilterRow& row) noexcept {
                       even[lane + 3] + odd[lane + 3]);
         }
     }
+    prefetch_lines(row, fetch, all_lines);
     return x;
 }
 

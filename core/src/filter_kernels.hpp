@@ -6,6 +6,11 @@
 #include <cstdint>
 #include <cstring>
 
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
+
+#include "raypoint/core/filter_plan.hpp"
 #include "raypoint/core/poisson_disk.hpp"
 
 namespace raypoint::core::detail {
@@ -66,7 +71,43 @@ struct FilterRow {
     // o + n <= read_limit: the row's bytes less the largest tap shift.
     int read_limit;
     FilterOutput out;
+    // Input lines (64 bytes each) to prefetch into L2 while filtering: from `fetch` (64-byte
+    // aligned) to `fetch_end`, `fetch_lines` (a multiple of 4) before each step, the rest
+    // after the last.
+    const std::uint8_t* fetch;
+    const std::uint8_t* fetch_end;
+    int fetch_lines;
 };
+
+// The working columns outside the interior (FilterPlan::border_groups()).
+struct FilterBorder {
+    const std::uint8_t* const* taps;  // per tap, its input row (no column shift)
+    const FilterBorderGroup* groups;
+    int group_count;
+    bool yuyv;
+    FilterOutput out;
+};
+
+// Prefetches into L2 up to `lines` (a multiple of 4) of the row's lines from `at`, four at a
+// time, stopping at row.fetch_end (the last four may pass it by up to three lines, which a
+// prefetch may: it never faults); returns where the next prefetch starts.
+constexpr int all_lines = 1 << 30;
+inline const std::uint8_t* prefetch_lines(const FilterRow& row, const std::uint8_t* at,
+                                          int lines) noexcept {
+#if defined(__SSE2__)
+    for (; lines > 0 && at < row.fetch_end; lines -= 4, at += 4 * 64) {
+        _mm_prefetch(reinterpret_cast<const char*>(at), _MM_HINT_T1);
+        _mm_prefetch(reinterpret_cast<const char*>(at + 64), _MM_HINT_T1);
+        _mm_prefetch(reinterpret_cast<const char*>(at + 2 * 64), _MM_HINT_T1);
+        _mm_prefetch(reinterpret_cast<const char*>(at + 3 * 64), _MM_HINT_T1);
+    }
+    return at;
+#else
+    (void)row;
+    (void)lines;
+    return at;
+#endif
+}
 
 // Unaligned 4- and 8-byte accesses without aliasing concerns (they compile to one move).
 inline int load32(const std::uint8_t* at) noexcept {
@@ -86,6 +127,8 @@ int filter_bgr_sse2(const FilterRow& row) noexcept;
 int filter_yuyv_sse2(const FilterRow& row) noexcept;
 int filter_bgr_avx2(const FilterRow& row) noexcept;
 int filter_yuyv_avx2(const FilterRow& row) noexcept;
+// Returns false where the CPU's x86 kernels are not compiled (the caller loops instead).
+bool filter_border_avx2(const FilterBorder& border) noexcept;
 
 // YUYV sums of 16 taps, Y from each tap's own pixel, U and V from its pair, to a BGR pixel and
 // its grey: averaged as YUV, then BT.601 limited range, the usual meaning of V4L2's YUYV.

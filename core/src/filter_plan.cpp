@@ -97,9 +97,49 @@ void FilterPlan::build(int input_width, int input_height, PixelFormat format) {
     for (const FilterTap& tap : taps_)
         largest_shift = std::max(largest_shift, tap.shift_bytes);
     read_limit_ = input_width * (bgr ? 3 : 2) - largest_shift;
+    plan_border(input_width, bgr);
     input_width_ = input_width;
     input_height_ = input_height;
     format_ = format;
+}
+
+// The columns outside [interior_begin, interior_end), or every column where the YUYV kernels
+// do not apply, four to a group. A BGR load starts at the pixel's B, or one byte before it
+// where 4 bytes from B would pass the row's end; a YUYV load at the column's pair.
+void FilterPlan::plan_border(int input_width, bool bgr) {
+    std::vector<int> columns;
+    const bool kernels = bgr || uniform_parity_;
+    for (int x = 0; x < working_.width; ++x) {
+        if (!kernels || x < interior_begin_ || x >= std::max(interior_end_, interior_begin_))
+            columns.push_back(x);
+    }
+    const int row_bytes = input_width * (bgr ? 3 : 2);
+    constexpr std::uint8_t zero = 0x80;  // pshufb writes 0 for a set high bit
+    border_groups_.assign((columns.size() + 3) / 4, FilterBorderGroup{});
+    for (std::size_t g = 0; g < border_groups_.size(); ++g) {
+        FilterBorderGroup& group = border_groups_[g];
+        group.count = static_cast<int>(std::min<std::size_t>(4, columns.size() - 4 * g));
+        for (int k = 0; k < 4; ++k)
+            group.columns[k] = columns[4 * g + std::min(k, group.count - 1)];
+        for (std::size_t t = 0; t < taps_.size(); ++t) {
+            FilterBorderGroup::Tap& tap = group.taps[t];
+            tap.select.fill(zero);
+            for (int k = 0; k < 4; ++k) {
+                const int column = taps_[t].columns[group.columns[k]];
+                std::array<int, 3> bytes{};  // of the three values, within the 4 loaded
+                if (bgr) {
+                    const bool back = column * 3 + 4 > row_bytes && column > 0;
+                    tap.loads[k] = column * 3 - (back ? 1 : 0);
+                    bytes = back ? std::array<int, 3>{1, 2, 3} : std::array<int, 3>{0, 1, 2};
+                } else {
+                    tap.loads[k] = (column & ~1) * 2;
+                    bytes = {(column & 1) * 2, 1, 3};
+                }
+                for (int value = 0; value < 3; ++value)
+                    tap.select[k * 8 + value * 2] = static_cast<std::uint8_t>(k * 4 + bytes[value]);
+            }
+        }
+    }
 }
 
 }  // namespace raypoint::core

@@ -5,6 +5,7 @@
 #include "raypoint/core/filter_stage.hpp"
 
 #include <algorithm>
+#include <cstdint>
 
 #if defined(__SSE2__)
 #include <xmmintrin.h>
@@ -59,45 +60,65 @@ bool FilterStage::apply(const FrameView& frame) noexcept {
 // The filter is evaluated only at the working pixels' centres: filtering the whole frame and
 // then subsampling gives the same values at 16x the cost for 640x480. Working pixel outside,
 // taps inside, so the sums stay in registers; the interior skips the clamped column tables
-// and runs in the vector kernels of filter_kernels.cpp.
+// and runs in the vector kernels of filter_kernels.cpp, the border after it.
 void FilterStage::filter_bgr(const FrameView& frame) noexcept {
-    const auto& taps = plan_.taps();
     const int* const centre_bytes = plan_.centre_bytes().data();
-    const int width = plan_.working().width;
-    const int interior_begin = plan_.interior_begin();
-    const int interior_end = plan_.interior_end();
     for (int y = 0; y < plan_.working().height; ++y) {
         start_row(frame, y);
         const detail::FilterOutput target = output_row(y);
-        const auto clamped = [&](int x) {
+        for (int x = filter_interior(plan_.interior_begin(), target); x < plan_.interior_end();
+             ++x) {
             unsigned b = 0, g = 0, r = 0;
             for (int t = 0; t < poisson_disk_tap_count; ++t) {
-                const std::uint8_t* pixel = tap_row_pointers_[t] + taps[t].columns[x] * 3;
-                b += pixel[0];
-                g += pixel[1];
-                r += pixel[2];
-            }
-            detail::store_bgr(target, x, b, g, r);
-        };
-        int x = 0;
-        for (; x < interior_begin; ++x)
-            clamped(x);
-        shift_taps(1);
-        x = filter_interior(x, target);
-        for (; x < interior_end; ++x) {
-            unsigned b = 0, g = 0, r = 0;
-            for (int t = 0; t < poisson_disk_tap_count; ++t) {
-                const std::uint8_t* pixel = tap_row_pointers_[t] + centre_bytes[x];
+                const std::uint8_t* pixel = shifted_tap_pointers_[t] + centre_bytes[x];
                 b += pixel[0];
                 g += pixel[1];
                 r += pixel[2];
             }
             detail::store_bgr(target, x, b, g, r);
         }
-        shift_taps(-1);
-        for (x = std::max(interior_end, interior_begin); x < width; ++x)
-            clamped(x);
+        filter_border(target);
     }
+}
+
+// The columns the interior leaves (clamped taps), after it: its kernels' stores may spill into
+// the right border's first columns.
+void FilterStage::filter_border(const detail::FilterOutput& target) const noexcept {
+    const auto& groups = plan_.border_groups();
+    const bool yuyv = plan_.format() == PixelFormat::yuyv;
+    if (instructions_ == InstructionSet::avx2 &&
+        detail::filter_border_avx2({tap_row_pointers_.data(), groups.data(),
+                                    static_cast<int>(groups.size()), yuyv, target})) {
+        return;
+    }
+    for (const FilterBorderGroup& group : groups) {
+        for (int k = 0; k < group.count; ++k)
+            filter_clamped(target, group.columns[k]);
+    }
+}
+
+// One working column through the plan's clamped column tables (tap pointers not shifted).
+void FilterStage::filter_clamped(const detail::FilterOutput& target, int x) const noexcept {
+    const auto& taps = plan_.taps();
+    unsigned first = 0, second = 0, third = 0;  // B G R, or Y U V
+    if (plan_.format() == PixelFormat::yuyv) {
+        for (int t = 0; t < poisson_disk_tap_count; ++t) {
+            const int column = taps[t].columns[x];
+            const std::uint8_t* pair = tap_row_pointers_[t] + (column & ~1) * 2;
+            first += pair[(column & 1) * 2];
+            second += pair[1];
+            third += pair[3];
+        }
+        detail::store_yuv(target, x, first, second, third);
+        return;
+    }
+    for (int t = 0; t < poisson_disk_tap_count; ++t) {
+        const std::uint8_t* pixel = tap_row_pointers_[t] + taps[t].columns[x] * 3;
+        first += pixel[0];
+        second += pixel[1];
+        third += pixel[2];
+    }
+    detail::store_bgr(target, x, first, second, third);
 }
 
 detail::FilterOutput FilterStage::output_row(int y) noexcept {
@@ -110,7 +131,7 @@ detail::FilterOutput FilterStage::output_row(int y) noexcept {
 // The vector kernels over the interior from working column `begin` (the taps shifted);
 // returns the first column they left for the plain loops.
 int FilterStage::filter_interior(int begin, const detail::FilterOutput& target) const noexcept {
-    const detail::FilterRow row{tap_row_pointers_.data(),
+    const detail::FilterRow row{shifted_tap_pointers_.data(),
                                 plan_.centre_bytes().data(),
                                 plan_.odd_taps(),
                                 begin,
@@ -118,7 +139,10 @@ int FilterStage::filter_interior(int begin, const detail::FilterOutput& target) 
                                 plan_.working().width,
                                 plan_.centre_step_bytes(),
                                 plan_.read_limit(),
-                                target};
+                                target,
+                                fetch_,
+                                fetch_end_,
+                                fetch_lines_};
     const bool bgr = plan_.format() == PixelFormat::bgr;
     switch (instructions_) {
         case InstructionSet::avx2:
@@ -131,23 +155,25 @@ int FilterStage::filter_interior(int begin, const detail::FilterOutput& target) 
     return begin;
 }
 
-// Moves every tap's row pointer by its column shift (sign 1) or back (-1): the interior
-// addresses a tap as row pointer + centre_bytes()[x].
-void FilterStage::shift_taps(int sign) noexcept {
-    const auto& taps = plan_.taps();
-    for (std::size_t t = 0; t < tap_row_pointers_.size(); ++t)
-        tap_row_pointers_[t] += sign * taps[t].shift_bytes;
-}
-
-// Points each tap at its input row for working row y, and fetches the rows of the next.
+// Points each tap at its input row for working row y, also shifted by its column shift (the
+// interior addresses a tap as shifted pointer + centre_bytes()[x]), and fetches the rows of
+// the next.
 void FilterStage::start_row(const FrameView& frame, int y) noexcept {
     const auto& taps = plan_.taps();
     for (std::size_t t = 0; t < tap_row_pointers_.size(); ++t) {
         tap_row_pointers_[t] =
             frame.data + static_cast<std::ptrdiff_t>(taps[t].rows[y]) * frame.stride;
+        shifted_tap_pointers_[t] = tap_row_pointers_[t] + taps[t].shift_bytes;
     }
     if (y == 0) prefetch_rows(frame, 1);
-    prefetch_rows(frame, y + 2);
+    set_fetch(frame, y + 2);
+    // The vector kernels spread the prefetches over their steps; the plain loops take them at
+    // once.
+    const bool kernels = plan_.format() == PixelFormat::bgr || plan_.uniform_parity();
+    if (instructions_ == InstructionSet::scalar || !kernels) {
+        prefetch(fetch_, fetch_end_);
+        fetch_ = fetch_end_;
+    }
 }
 
 // A camera frame arrives cold in memory; the taps read 16 rows at a time, too many streams
@@ -155,55 +181,58 @@ void FilterStage::start_row(const FrameView& frame, int y) noexcept {
 // working rows ahead, as one row's filtering is shorter than a fetch from memory. Into L2
 // (T1), not L1: a working row's 120 lines at once are more misses than L1 tracks (likely
 // prefetches waiting for a free L1 miss slot held up the loads); on AMD Zen 4 the filter took
-// 20% less time with T1.
-void FilterStage::prefetch_rows(const FrameView& frame, int next_y) const noexcept {
-#if defined(__SSE2__)
+// 20% less time with T1. The lines are the input rows working row `next_y` adds to the
+// previous one's, as one span from the first's start to the last's end (64-byte aligned).
+// The vector kernels issue them a few before each step: at once at the row's start, the prefetch
+// instructions themselves stalled (on AMD Zen 4 a new frame took about 1.5x as long).
+void FilterStage::set_fetch(const FrameView& frame, int next_y) noexcept {
+    fetch_ = fetch_end_ = nullptr;
     if (next_y >= plan_.working().height) return;
     const int first = plan_.last_tap_row(next_y - 1) + 1;
     const int last = plan_.last_tap_row(next_y);
+    if (first > last) return;
     const int bytes = frame.width * (frame.format == PixelFormat::bgr ? 3 : 2);
-    for (int row = first; row <= last; ++row) {
-        const std::uint8_t* start = frame.data + static_cast<std::ptrdiff_t>(row) * frame.stride;
-        for (int offset = 0; offset < bytes; offset += 64) {
-            _mm_prefetch(reinterpret_cast<const char*>(start + offset), _MM_HINT_T1);
-        }
-    }
+    // Back to its line's start: row `first` >= 1 starts at least a stride (>= 64 bytes) into
+    // the frame, so this stays inside it.
+    const std::uint8_t* start = frame.data + static_cast<std::ptrdiff_t>(first) * frame.stride;
+    fetch_ = start - reinterpret_cast<std::uintptr_t>(start) % 64;
+    fetch_end_ = frame.data + static_cast<std::ptrdiff_t>(last) * frame.stride + bytes;
+    // Spread evenly over the interior's steps (eight working pixels with AVX2, four with SSE2),
+    // four lines at a time.
+    const long lines = (fetch_end_ - fetch_ + 63) / 64;
+    const int step = instructions_ == InstructionSet::avx2 ? 8 : 4;
+    const long steps = std::max(1, (plan_.interior_end() - plan_.interior_begin()) / step);
+    fetch_lines_ = static_cast<int>((lines + 4 * steps - 1) / (4 * steps) * 4);
+}
+
+void FilterStage::prefetch(const std::uint8_t* begin, const std::uint8_t* end) noexcept {
+#if defined(__SSE2__)
+    for (; begin < end; begin += 64)
+        _mm_prefetch(reinterpret_cast<const char*>(begin), _MM_HINT_T1);
 #else
-    (void)frame;
-    (void)next_y;
+    (void)begin;
+    (void)end;
 #endif
+}
+
+void FilterStage::prefetch_rows(const FrameView& frame, int next_y) noexcept {
+    set_fetch(frame, next_y);
+    prefetch(fetch_, fetch_end_);
 }
 
 // YUYV: Y from the pixel itself, U and V from its pair; averaged as YUV, then converted to BGR
 // (detail::store_yuv). The vector kernels need every interior centre of one parity (integer
 // scales: 320, 640, 1280, 1920 wide to 160), so a tap's Y is at the same place of its pair.
 void FilterStage::filter_yuyv(const FrameView& frame) noexcept {
-    const auto& taps = plan_.taps();
-    const int width = plan_.working().width;
     for (int y = 0; y < plan_.working().height; ++y) {
         start_row(frame, y);
         const detail::FilterOutput target = output_row(y);
-        const auto clamped = [&](int x) {
-            unsigned sum_y = 0, sum_u = 0, sum_v = 0;
-            for (int t = 0; t < poisson_disk_tap_count; ++t) {
-                const int column = taps[t].columns[x];
-                const std::uint8_t* pair = tap_row_pointers_[t] + (column & ~1) * 2;
-                sum_y += pair[(column & 1) * 2];
-                sum_u += pair[1];
-                sum_v += pair[3];
-            }
-            detail::store_yuv(target, x, sum_y, sum_u, sum_v);
-        };
-        int x = 0;
         if (plan_.uniform_parity()) {
-            for (; x < plan_.interior_begin(); ++x)
-                clamped(x);
-            shift_taps(1);
-            x = filter_interior(x, target);
-            shift_taps(-1);
+            const int done = filter_interior(plan_.interior_begin(), target);
+            for (int x = done; x < plan_.interior_end(); ++x)
+                filter_clamped(target, x);
         }
-        for (; x < width; ++x)
-            clamped(x);
+        filter_border(target);
     }
 }
 

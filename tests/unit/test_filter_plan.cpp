@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -165,6 +166,75 @@ TEST(FilterPlan, NoInteriorWhenTheTapsReachPastBothSides) {
             ASSERT_LT(column, 160);
         }
     }
+}
+
+// The border groups hold exactly the columns the interior kernels leave, each once, and per
+// tap a 4-byte load inside the row whose selected bytes are the clamped column's B, G, R (YUYV:
+// its own Y, its pair's U and V), widened to 16-bit lanes with the spare lane zero.
+void expect_border_reads_the_clamped_columns(const FilterPlan& plan, int input_width,
+                                             PixelFormat format) {
+    const bool bgr = format == PixelFormat::bgr;
+    const int row_bytes = input_width * (bgr ? 3 : 2);
+    const bool kernels = bgr || plan.uniform_parity();
+    std::vector<int> expected;
+    for (int x = 0; x < plan.working().width; ++x) {
+        if (!kernels || x < plan.interior_begin() ||
+            x >= std::max(plan.interior_end(), plan.interior_begin()))
+            expected.push_back(x);
+    }
+    std::vector<int> seen;
+    for (const FilterBorderGroup& group : plan.border_groups()) {
+        ASSERT_GE(group.count, 1);
+        ASSERT_LE(group.count, 4);
+        for (int k = 0; k < group.count; ++k)
+            seen.push_back(group.columns[k]);
+        for (int t = 0; t < poisson_disk_tap_count; ++t) {
+            const FilterBorderGroup::Tap& tap = group.taps[t];
+            for (int k = 0; k < 4; ++k) {
+                const int column = plan.taps()[t].columns[group.columns[k]];
+                ASSERT_GE(tap.loads[k], 0);
+                ASSERT_LE(tap.loads[k] + 4, row_bytes);
+                const std::array<int, 3> wanted =
+                    bgr ? std::array<int, 3>{column * 3, column * 3 + 1, column * 3 + 2}
+                        : std::array<int, 3>{column * 2, (column & ~1) * 2 + 1,
+                                             (column & ~1) * 2 + 3};
+                for (int value = 0; value < 3; ++value) {
+                    const int index = tap.select[k * 8 + value * 2];
+                    ASSERT_GE(index, k * 4) << t << " " << k;
+                    ASSERT_LT(index, k * 4 + 4) << t << " " << k;
+                    EXPECT_EQ(tap.loads[k] + index - k * 4, wanted[value]) << t << " " << k;
+                    EXPECT_EQ(tap.select[k * 8 + value * 2 + 1], 0x80) << t << " " << k;
+                }
+                EXPECT_EQ(tap.select[k * 8 + 6], 0x80);
+                EXPECT_EQ(tap.select[k * 8 + 7], 0x80);
+            }
+        }
+    }
+    EXPECT_EQ(seen, expected);
+}
+
+TEST(FilterPlan, BorderGroupsReadTheClampedColumnsInsideTheRow) {
+    struct Case {
+        int width;
+        PixelFormat format;
+        double radius;
+    };
+    for (const Case& c : {Case{640, PixelFormat::bgr, 5.0}, Case{640, PixelFormat::yuyv, 5.0},
+                          Case{1280, PixelFormat::bgr, 5.0}, Case{320, PixelFormat::yuyv, 5.0},
+                          Case{480, PixelFormat::yuyv, 5.0}, Case{642, PixelFormat::bgr, 5.0},
+                          Case{640, PixelFormat::bgr, 40.0}, Case{160, PixelFormat::bgr, 400.0}}) {
+        FilterPlan plan({160, 120}, c.radius);
+        plan.build(c.width, c.width * 3 / 4, c.format);
+        SCOPED_TRACE(std::to_string(c.width) + (c.format == PixelFormat::bgr ? " BGR" : " YUYV") +
+                     " radius " + std::to_string(c.radius));
+        expect_border_reads_the_clamped_columns(plan, c.width, c.format);
+    }
+    // 640x480 BGR: the interior is [1, 158), one group of three.
+    FilterPlan plan({160, 120}, 5.0);
+    plan.build(640, 480, PixelFormat::bgr);
+    ASSERT_EQ(plan.border_groups().size(), 1U);
+    EXPECT_EQ(plan.border_groups()[0].count, 3);
+    EXPECT_EQ(plan.border_groups()[0].columns, (std::array<int, 4>{0, 158, 159, 159}));
 }
 
 TEST(FilterStage, CurrentBecomesPreviousAndPlanesSplitTheColour) {

@@ -39,9 +39,10 @@ std::uint8_t clamp_byte(int v) {
 }
 
 // Reference: returns the working BGR image for a BGR or YUYV frame.
-cv::Mat reference(const cv::Mat& frame, PixelFormat format, int width, cv::Size working) {
+cv::Mat reference(const cv::Mat& frame, PixelFormat format, int width, cv::Size working,
+                  double filter_radius) {
     const auto& taps = raypoint::core::poisson_disk_taps();
-    const double radius = 5.0 * width / 640.0;
+    const double radius = filter_radius * width / 640.0;
     const int n = static_cast<int>(taps.size());
     cv::Mat out(working, CV_8UC3);
     for (int y = 0; y < working.height; ++y) {
@@ -93,20 +94,23 @@ std::vector<InstructionSet> runnable_sets() {
 }
 
 // `frame`: size.height rows of the frame's bytes, any step.
-void expect_frame_matches_reference(const cv::Mat& frame, cv::Size size, PixelFormat format) {
+void expect_frame_matches_reference(const cv::Mat& frame, cv::Size size, PixelFormat format,
+                                    double filter_radius = 5.0) {
     PreprocessSettings settings;
+    settings.filter_radius = filter_radius;
     const cv::Mat expected =
-        reference(frame, format, size.width, cv::Size(settings.work_width, settings.work_height));
+        reference(frame, format, size.width, cv::Size(settings.work_width, settings.work_height),
+                  filter_radius);
     cv::Mat expected_grey;
     cv::cvtColor(expected, expected_grey, cv::COLOR_BGR2GRAY);
     for (const InstructionSet set : runnable_sets()) {
         Preprocessor preprocessor(settings, raypoint::core::StageInstructions::both(set));
         ASSERT_TRUE(preprocessor.process(FrameView{frame.data, size.width, size.height,
                                                    static_cast<int>(frame.step), format, 0}));
-        const std::string where = std::to_string(size.width) + "x" + std::to_string(size.height) +
-                                  (format == PixelFormat::bgr ? " BGR " : " YUYV ") +
-                                  std::string(to_string(set)) + " step " +
-                                  std::to_string(frame.step);
+        const std::string where =
+            std::to_string(size.width) + "x" + std::to_string(size.height) +
+            (format == PixelFormat::bgr ? " BGR " : " YUYV ") + std::string(to_string(set)) +
+            " step " + std::to_string(frame.step) + " radius " + std::to_string(filter_radius);
         cv::Mat difference;
         cv::absdiff(preprocessor.color(), expected, difference);
         EXPECT_EQ(cv::countNonZero(difference.reshape(1)), 0) << where;
@@ -119,28 +123,41 @@ int row_bytes(cv::Size size, PixelFormat format) {
     return format == PixelFormat::bgr ? size.width * 3 : size.width * 2;
 }
 
-void expect_matches_reference(cv::Size size, PixelFormat format) {
+void expect_matches_reference(cv::Size size, PixelFormat format, double filter_radius = 5.0) {
     cv::Mat frame(size.height, row_bytes(size, format), CV_8U);
     cv::randu(frame, 0, 256);
-    expect_frame_matches_reference(frame, size, format);
+    expect_frame_matches_reference(frame, size, format, filter_radius);
     // Rows further apart than their bytes (a padded buffer), by an odd count.
     cv::Mat padded(size.height, row_bytes(size, format) + 13, CV_8U);
     cv::randu(padded, 0, 256);
-    expect_frame_matches_reference(padded.colRange(0, row_bytes(size, format)), size, format);
+    expect_frame_matches_reference(padded.colRange(0, row_bytes(size, format)), size, format,
+                                   filter_radius);
 }
 
-// 640, 1280, 1920: integer scales (SIMD interior); 642 and 320: the clamped path.
+// 640, 1280, 1920: integer scales (SIMD interior); 642 and 320: the clamped path; 160 and
+// 250: borders of other widths (1:1, and a scale whose centres step unevenly).
 TEST(FilterReference, BgrMatchesExactly) {
-    for (const cv::Size size : {cv::Size(640, 480), cv::Size(1280, 720), cv::Size(642, 482),
-                                cv::Size(320, 240), cv::Size(1920, 1080)}) {
+    for (const cv::Size size :
+         {cv::Size(640, 480), cv::Size(1280, 720), cv::Size(642, 482), cv::Size(320, 240),
+          cv::Size(1920, 1080), cv::Size(160, 120), cv::Size(250, 190)}) {
         expect_matches_reference(size, PixelFormat::bgr);
     }
 }
 
 TEST(FilterReference, YuyvMatchesExactly) {
-    for (const cv::Size size : {cv::Size(640, 480), cv::Size(1280, 720), cv::Size(642, 482),
-                                cv::Size(320, 240), cv::Size(1920, 1080)}) {
+    for (const cv::Size size :
+         {cv::Size(640, 480), cv::Size(1280, 720), cv::Size(642, 482), cv::Size(320, 240),
+          cv::Size(1920, 1080), cv::Size(160, 120), cv::Size(250, 190)}) {
         expect_matches_reference(size, PixelFormat::yuyv);
+    }
+}
+
+// The largest radius the settings allow: ten clamped columns on each side at 640 wide, in
+// groups of four and a partial one, and at 160 wide more than a quarter of the row.
+TEST(FilterReference, WideRadiusBordersMatchExactly) {
+    for (const PixelFormat format : {PixelFormat::bgr, PixelFormat::yuyv}) {
+        for (const cv::Size size : {cv::Size(640, 480), cv::Size(160, 120), cv::Size(642, 482)})
+            expect_matches_reference(size, format, 40.0);
     }
 }
 

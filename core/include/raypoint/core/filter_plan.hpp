@@ -28,6 +28,20 @@ struct FilterTap {
     std::vector<int> rows;     // per working row, the tap's input row, clamped
 };
 
+// Up to four working columns outside the interior (their taps clamped), filtered together by a
+// vector kernel: per tap, where each column's 4-byte load starts in the tap's input row (the
+// row's own bytes only), and the byte shuffle (pshufb) that widens its three values to the
+// 16-bit lanes [B G R 0] (YUYV: [Y U V 0]), columns 0-1 in the low 16 bytes, 2-3 in the high.
+struct FilterBorderGroup {
+    std::array<int, 4> columns{};  // working columns; after the first `count`, repeats
+    int count = 0;
+    struct Tap {
+        std::array<int, 4> loads{};
+        std::array<std::uint8_t, 32> select{};
+    };
+    std::array<Tap, poisson_disk_tap_count> taps{};
+};
+
 class FilterPlan {
   public:
     // `filter_radius` in pixels of a 640-wide frame (PreprocessSettings::filter_radius); it
@@ -67,11 +81,16 @@ class FilterPlan {
     // A read of n bytes at a tap's shifted row pointer + o stays inside every tap's input row
     // when o + n <= read_limit(): the row's bytes less the largest tap shift.
     int read_limit() const noexcept { return read_limit_; }
+    // The working columns the interior kernels leave (all of them for YUYV of mixed parity),
+    // four to a group.
+    const std::vector<FilterBorderGroup>& border_groups() const noexcept { return border_groups_; }
     // Per working row, the last (largest) input row a tap reads: the filter fetches the rows
     // of the next working row ahead up to it.
     int last_tap_row(int y) const noexcept { return last_tap_rows_[y]; }
 
   private:
+    void plan_border(int input_width, bool bgr);
+
     cv::Size working_;
     double filter_radius_;
     int input_width_ = 0;
@@ -81,6 +100,7 @@ class FilterPlan {
     std::vector<int> centre_columns_;
     std::vector<int> centre_bytes_;
     std::vector<int> last_tap_rows_;
+    std::vector<FilterBorderGroup> border_groups_;
     int interior_begin_ = 0;
     int interior_end_ = 0;
     bool uniform_parity_ = false;

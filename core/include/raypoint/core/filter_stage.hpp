@@ -52,19 +52,27 @@ class FilterStage {
     void filter_bgr(const FrameView& frame) noexcept;
     void filter_yuyv(const FrameView& frame) noexcept;
     void start_row(const FrameView& frame, int y) noexcept;
-    void shift_taps(int sign) noexcept;
     detail::FilterOutput output_row(int y) noexcept;
     int filter_interior(int begin, const detail::FilterOutput& target) const noexcept;
-    void prefetch_rows(const FrameView& frame, int next_y) const noexcept;
+    void filter_border(const detail::FilterOutput& target) const noexcept;
+    void filter_clamped(const detail::FilterOutput& target, int x) const noexcept;
+    void prefetch_rows(const FrameView& frame, int next_y) noexcept;
+    void set_fetch(const FrameView& frame, int next_y) noexcept;
+    static void prefetch(const std::uint8_t* begin, const std::uint8_t* end) noexcept;
 
     InstructionSet instructions_;
     FilterPlan plan_;
-    // Per tap, the input row it reads for the working row being filtered (plus its byte
-    // shift while the interior kernels run).
+    // Per tap, the input row it reads for the working row being filtered, and the same plus
+    // the tap's column shift in bytes (the interior kernels').
     std::array<const std::uint8_t*, poisson_disk_tap_count> tap_row_pointers_{};
+    std::array<const std::uint8_t*, poisson_disk_tap_count> shifted_tap_pointers_{};
     std::array<cv::Mat, 2> color_;
     std::array<cv::Mat, 2> gray_;
     cv::Mat planes_;
+    // The input lines left to prefetch for a later working row, and how many a kernel step.
+    const std::uint8_t* fetch_ = nullptr;
+    const std::uint8_t* fetch_end_ = nullptr;
+    int fetch_lines_ = 8;
     int current_ = 0;
     long filtered_ = 0;  // frames filtered since the input geometry last changed
 };
