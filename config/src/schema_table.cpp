@@ -102,7 +102,7 @@ const std::vector<Key>& schema() {
             [](auto& c) -> auto& { return c.core.estimator.extremity; }),
         integer_key(
             "estimator", "extremity_contact", 1, 1000,
-            "refined: border pixels from which a region counts as crossing the border",
+            "refined: longest run of border pixels from which a region crosses the border",
             [](auto& c) -> auto& { return c.core.estimator.extremity_contact; }),
         integer_key(
             "estimator", "diagonal_tolerance", 0, 765,

@@ -38,6 +38,7 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     ray_pixels_.assign(ray_pitch_ * static_cast<std::size_t>(height_), 0);
     ray_list_.assign(pixels, cv::Point());
     filled_.assign(pixels, 0);
+    on_border_.assign(static_cast<std::size_t>(2 * (width_ + height_)), 0);
     queue_.assign(pixels, cv::Point());
 }
 

@@ -31,7 +31,16 @@ class RasterEstimator final : public RayEstimatorBase {
     }
     void add_edge_band(const cv::Mat& edges, double& area, double& sum_x, double& sum_y) noexcept;
     // EstimatorSettings::extremity: a region that crosses the image border keeps its far end.
-    void keep_extremity(Estimate& estimate, std::size_t inside_count) const noexcept;
+    void keep_extremity(Estimate& estimate, std::size_t inside_count) noexcept;
+    // The region's pixels on the image border: how many, their centre, and the longest run of
+    // them along the border (walked round it from the top-left corner, perimeter_position()).
+    struct BorderContact {
+        int pixels = 0;
+        int longest_run = 0;
+        cv::Point2d centre;
+    };
+    BorderContact border_contact(std::size_t inside_count) noexcept;
+    int perimeter_position(cv::Point pixel) const noexcept;
 
     // filled_ values: 0 not reached, inside, or band + depth into the edge band.
     static constexpr unsigned char inside = 1;
@@ -50,9 +59,10 @@ class RasterEstimator final : public RayEstimatorBase {
     // unsigned char pointer may alias any member, which would be reloaded after each one.
     std::vector<cv::Point> ray_list_;
     std::size_t ray_count_ = 0;
-    std::size_t blocks_listed_ = 0;      // the first this many have their blocks selected
-    std::vector<int> selected_;          // indices of selected blocks, in selection order
-    std::vector<unsigned char> filled_;  // refine(): 0 not reached, inside, or band + depth
+    std::size_t blocks_listed_ = 0;         // the first this many have their blocks selected
+    std::vector<int> selected_;             // indices of selected blocks, in selection order
+    std::vector<unsigned char> filled_;     // refine(): 0 not reached, inside, or band + depth
+    std::vector<unsigned char> on_border_;  // keep_extremity(): 1 a perimeter position reached
     // refine(): the first queued_ slots are the reached pixels, in order of reaching; a pixel is
     // queued at most once, so one slot a pixel always suffices.
     std::vector<cv::Point> queue_;

@@ -165,6 +165,49 @@ TEST(RasterExtremity, ARegionOverTheBorderHasItsFarEnd) {
     EXPECT_FALSE(make_estimator(settings)->estimate(edges, {80, 70}).crosses_border);
 }
 
+// The same outline drawn around `mask`: 2 px inside it, none along the image border.
+cv::Mat outline_of(const cv::Mat& mask) {
+    cv::Mat eroded;
+    cv::erode(mask, eroded, cv::getStructuringElement(cv::MORPH_RECT, {5, 5}));
+    return mask - eroded;
+}
+
+TEST(RasterExtremity, ANarrowForearmIsALimb) {
+    // A forearm 7 px wide inside its outline where it crosses, as a sleeve is at 160x120.
+    cv::Mat mask(120, 160, CV_8U, cv::Scalar(0));
+    cv::rectangle(mask, cv::Rect(75, 50, 11, 70), cv::Scalar(255), cv::FILLED);
+    cv::circle(mask, {80, 35}, 18, cv::Scalar(255), cv::FILLED);
+    EstimatorSettings settings;
+    settings.extremity = 0.5;
+    settings.extremity_contact = 4;
+    const Estimate e = make_estimator(settings)->estimate(outline_of(mask), {80, 35});
+    ASSERT_TRUE(e.crosses_border);
+    EXPECT_LT(std::hypot(e.end_centroid.x - 80.0F, e.end_centroid.y - 35.0F), 10.0F);
+    settings.extremity_contact = 8;  // longer than the 7 px run
+    EXPECT_FALSE(make_estimator(settings)->estimate(outline_of(mask), {80, 35}).crosses_border);
+}
+
+TEST(RasterExtremity, FingertipsPastTheBorderAreNoLimb) {
+    // A palm whose four fingers run out over the top border: four runs of 4 px along it, 16
+    // border pixels in all. No run holds half of them, so the region is the whole hand, not its
+    // far end from the fingertips (the palm's heel).
+    cv::Mat mask(120, 160, CV_8U, cv::Scalar(0));
+    cv::circle(mask, {80, 50}, 22, cv::Scalar(255), cv::FILLED);
+    for (const int x : {58, 70, 82, 94})
+        cv::rectangle(mask, cv::Rect(x, 0, 8, 45), cv::Scalar(255), cv::FILLED);
+    const cv::Mat edges = outline_of(mask);
+    ASSERT_EQ(edges.at<std::uint8_t>(0, 61), 0);  // a fingertip's inside meets the border
+    EstimatorSettings settings;
+    settings.extremity = 0.5;
+    settings.extremity_contact = 4;
+    EXPECT_FALSE(make_estimator(settings)->estimate(edges, {80, 50}).crosses_border);
+    // A run of 4 is a limb where it is all of the contact: one finger alone.
+    cv::Mat finger(120, 160, CV_8U, cv::Scalar(0));
+    cv::circle(finger, {80, 50}, 22, cv::Scalar(255), cv::FILLED);
+    cv::rectangle(finger, cv::Rect(76, 0, 8, 45), cv::Scalar(255), cv::FILLED);
+    EXPECT_TRUE(make_estimator(settings)->estimate(outline_of(finger), {80, 50}).crosses_border);
+}
+
 TEST(RasterExtremity, ARegionInsideThePictureIsWhole) {
     const test::Shape disk = test::disk();
     EstimatorSettings settings;

@@ -82,14 +82,18 @@ struct EstimatorSettings {
     // check. 1.25 lost a rendered hand entering the picture; 1.5-1.75 measured the same
     // (docs/settings.md).
     double fill_growth = 1.75;
-    // AreaMode::refined: a region with at least extremity_contact pixels on the image border is
-    // an arm or a body coming in from outside the picture; its part beyond this share of the
+    // AreaMode::refined: a region that meets the image border in one run of at least
+    // extremity_contact pixels, holding at least half of its border pixels, is an arm or a body
+    // coming in from outside the picture (fingertips past the border meet it in short runs);
+    // its part beyond this share of the
     // farthest pixel's distance from the border crossing is its far end, the target when it
     // moves, and moves at least as densely as the rest (TrackingSettings::extremity_motion).
     // 0 = the whole region, as in the paper. 0.5 takes a rendered hand off its sleeve (0% to
     // 100% tracked) and loses no clip; 0.4 and 0.6 each lose one (docs/settings.md).
     double extremity = 0.5;
-    int extremity_contact = 16;
+    // 3-6 take a rendered forearm in a sleeve (6-8 px wide at 160x120) off the hand, 8 does
+    // not; a run of all the border pixels at 16, the earlier rule, missed it (docs/settings.md).
+    int extremity_contact = 4;
     // AreaMode::refined: the fill also steps diagonally between two pixels whose colours differ
     // by at most this (sum of |channel difference|), crossing a one-pixel diagonal line of edge
     // pixels. A finger at 160x120 is edge pixels but for a line of its own colour down its
