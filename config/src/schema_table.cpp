@@ -105,6 +105,11 @@ const std::vector<Key>& schema() {
             "refined: longest run of border pixels from which a region crosses the border",
             [](auto& c) -> auto& { return c.core.estimator.extremity_contact; }),
         integer_key(
+            "estimator", "weak_edge_threshold", 0, 254,
+            "refined: a leaked or too large region is estimated again on edges over this (0: "
+            "never)",
+            [](auto& c) -> auto& { return c.core.estimator.weak_edge_threshold; }),
+        integer_key(
             "estimator", "diagonal_tolerance", 0, 765,
             "refined fill: step diagonally between pixels of colours this close (0: never)",
             [](auto& c) -> auto& { return c.core.estimator.diagonal_tolerance; }),

@@ -48,6 +48,9 @@ std::optional<cv::Point2f> ImageEvidence::detect() noexcept {
 Estimate ImageEvidence::estimate(cv::Point2f inner) noexcept {
     images_.ensure_edges();
     estimator_.use_color(&images_.color());
+    const double pixels = static_cast<double>(images_.magnitude().total());
+    estimator_.use_magnitude(
+        {&images_.magnitude(), settings_.min_area * pixels, settings_.max_area * pixels});
     Estimate estimate = estimator_.estimate(images_.edges(), inner);
     if (!estimate.crosses_border) {
         on_end_ = false;

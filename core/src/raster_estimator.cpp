@@ -38,6 +38,8 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     ray_pixels_.assign(ray_pitch_ * static_cast<std::size_t>(height_), 0);
     ray_list_.assign(pixels, cv::Point());
     filled_.assign(pixels, 0);
+    weak_pixels_.assign(ray_pitch_ * static_cast<std::size_t>(height_), 0);
+    weak_edges_ = cv::Mat(height_, width_, CV_8U, weak_pixels_.data(), ray_pitch_);
     on_border_.assign(static_cast<std::size_t>(2 * (width_ + height_)), 0);
     queue_.assign(pixels, cv::Point());
 }
@@ -88,7 +90,47 @@ double RasterEstimator::block_area() const noexcept {
     return area;
 }
 
+// EstimatorSettings::weak_edge_threshold: an outline with gaps at the edge threshold may be
+// whole on the weaker edges. The first estimate stands when the second leaks too, or is no
+// target's size; the fill growth reference is then the first's, as if there was no second.
 Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcept {
+    const std::size_t reference = last_fill_;
+    const Estimate first = estimate_on(edges, inner);
+    if (settings_.weak_edge_threshold <= 0 || magnitude_.image == nullptr ||
+        settings_.area_mode != AreaMode::refined ||
+        (!first.leaked && first.area <= magnitude_.largest)) {
+        return first;
+    }
+    const cv::Mat* weak = weak_edges(edges);
+    if (weak == nullptr) return first;
+    const std::size_t first_fill = last_fill_;
+    last_fill_ = reference;
+    const Estimate second = estimate_on(*weak, inner);
+    if (!second.leaked && second.area >= magnitude_.smallest && second.area <= magnitude_.largest) {
+        return second;
+    }
+    last_fill_ = first_fill;
+    return first;
+}
+
+const cv::Mat* RasterEstimator::weak_edges(const cv::Mat& edges) noexcept {
+    const cv::Mat& magnitude = *magnitude_.image;
+    if (magnitude.size() != edges.size() || magnitude.type() != CV_8U || weak_edges_.empty() ||
+        edges.cols != width_ || edges.rows != height_ || edges.step[0] != ray_pitch_) {
+        return nullptr;
+    }
+    // Edge pixels keep their magnitude, as in the edge stage: the fill climbs it to the ridge.
+    const int threshold = settings_.weak_edge_threshold;
+    for (int y = 0; y < height_; ++y) {
+        const std::uint8_t* from = magnitude.ptr<std::uint8_t>(y);
+        std::uint8_t* to = weak_edges_.ptr<std::uint8_t>(y);
+        for (int x = 0; x < width_; ++x)
+            to[x] = from[x] > threshold ? from[x] : 0;
+    }
+    return &weak_edges_;
+}
+
+Estimate RasterEstimator::estimate_on(const cv::Mat& edges, cv::Point2f inner) noexcept {
     if (edges.cols != width_ || edges.rows != height_ || edges.step[0] != ray_pitch_) {
         try {
             resize(edges);
@@ -153,6 +195,7 @@ void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept 
     if (settings_.fill_growth > 0.0 && last_fill_ > 0)
         limit = std::min(limit, settings_.fill_growth * static_cast<double>(last_fill_));
     if (!fill(edges, false, limit)) {
+        estimate.leaked = true;
         fill(edges, true, static_cast<double>(filled_.size()));
     }
     last_fill_ = queued_;

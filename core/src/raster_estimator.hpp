@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "ray_estimators.hpp"
@@ -13,9 +14,14 @@ class RasterEstimator final : public RayEstimatorBase {
     explicit RasterEstimator(const EstimatorSettings& settings);
     Estimate estimate(const cv::Mat& edges, cv::Point2f inner) noexcept override;
     void use_color(const cv::Mat* color) noexcept override { color_ = color; }
+    void use_magnitude(const Magnitude& magnitude) noexcept override { magnitude_ = magnitude; }
     void forget_target() noexcept override { last_fill_ = 0; }
 
   private:
+    Estimate estimate_on(const cv::Mat& edges, cv::Point2f inner) noexcept;
+    // The edge image over EstimatorSettings::weak_edge_threshold, laid out as `edges` is (the
+    // estimator's buffers index both alike); null when the magnitude does not fit `edges`.
+    const cv::Mat* weak_edges(const cv::Mat& edges) noexcept;
     void resize(const cv::Mat& edges);
     void select_blocks() noexcept;
     cv::Point2f block_centroid() const noexcept;
@@ -47,7 +53,10 @@ class RasterEstimator final : public RayEstimatorBase {
     static constexpr unsigned char band = 2;
 
     const cv::Mat* color_ = nullptr;  // EstimatorSettings::diagonal_tolerance; not owned
-    std::size_t last_fill_ = 0;       // pixels the last refined fill reached; 0 = none yet
+    Magnitude magnitude_;             // EstimatorSettings::weak_edge_threshold; not owned
+    std::vector<std::uint8_t> weak_pixels_;
+    cv::Mat weak_edges_;         // a header on weak_pixels_, with the edge image's row step
+    std::size_t last_fill_ = 0;  // pixels the last refined fill reached; 0 = none yet
     int width_ = 0;
     int height_ = 0;
     std::vector<int> block_of_column_;

@@ -13,6 +13,7 @@ Settings paper_settings() {
     settings.tracking.min_area = 0.02;
     settings.estimator.area_mode = AreaMode::blocks;
     settings.estimator.extremity = 0.0;
+    settings.estimator.weak_edge_threshold = 0;
     settings.estimator.diagonal_tolerance = 0;
     settings.estimator.fill_growth = 0.0;
     settings.tracking.keep_still_target = false;

@@ -216,6 +216,55 @@ TEST(RasterExtremity, ARegionInsideThePictureIsWhole) {
     EXPECT_FALSE(make_estimator(settings)->estimate(disk.edges, {70, 55}).crosses_border);
 }
 
+// The disk's outline as a Sobel magnitude: 150 but for a 9 px stretch of its right side at 60,
+// a gap at the default edge threshold (96) that the weaker edges (over 48) close. The rays run
+// out through it and the region takes in the whole frame.
+cv::Mat disk_magnitude_with_gap() {
+    const test::Shape disk = test::disk();
+    cv::Mat magnitude = disk.edges * 150;
+    magnitude(cv::Rect(95, 56, 8, 9)).setTo(60, disk.edges(cv::Rect(95, 56, 8, 9)));
+    return magnitude;
+}
+
+TEST(RasterWeakEdges, ARegionThatRanOutIsEstimatedAgainOnTheWeakerEdges) {
+    const test::Shape disk = test::disk();
+    const cv::Mat magnitude = disk_magnitude_with_gap();
+    cv::Mat edges;
+    cv::threshold(magnitude, edges, 96, 0, cv::THRESH_TOZERO);
+    EstimatorSettings settings;
+    settings.weak_edge_threshold = 0;    // the paper's: the region runs out through the gap
+    const double largest = 0.6 * 19200;  // the frame's 60%
+    EXPECT_GT(make_estimator(settings)->estimate(edges, {70, 55}).area, largest);
+
+    settings.weak_edge_threshold = 48;
+    auto estimator = make_estimator(settings);
+    estimator->use_magnitude({&magnitude, 0.01 * 19200, largest});
+    const Estimate e = estimator->estimate(edges, {70, 55});
+    EXPECT_FALSE(e.leaked);
+    EXPECT_LE(centroid_error(e, disk.centroid), 0.5);
+    EXPECT_LE(std::abs(area_error(e, disk.area)), 0.05) << e.area;
+
+    // A target's size bounds the second estimate: one smaller than the disk can be is not taken.
+    estimator->use_magnitude({&magnitude, 2000.0, largest});
+    EXPECT_GT(estimator->estimate(edges, {70, 55}).area, largest);
+}
+
+TEST(RasterWeakEdges, AWholeOutlineIsEstimatedOnce) {
+    // Without a leak, or a region too large, the weaker edges are not looked at: a magnitude
+    // that would cut the disk in two changes nothing.
+    const test::Shape disk = test::disk();
+    cv::Mat magnitude = disk.edges * 150;
+    cv::line(magnitude, {63, 60}, {97, 60}, cv::Scalar(60));
+    cv::Mat edges;
+    cv::threshold(magnitude, edges, 96, 0, cv::THRESH_TOZERO);
+    EstimatorSettings settings;
+    auto estimator = make_estimator(settings);
+    estimator->use_magnitude({&magnitude, 0.01 * 19200, 0.6 * 19200});
+    const Estimate e = estimator->estimate(edges, {70, 55});
+    EXPECT_FALSE(e.leaked);
+    EXPECT_LE(std::abs(area_error(e, disk.area)), 0.05) << e.area;
+}
+
 TEST(Hand, RasterFromThePalmAndEveryFingertip) {
     const test::Hand hand = test::hand();
     const test::Shape& shape = hand.shape;

@@ -22,6 +22,9 @@ struct Estimate {
     double area = 0.0;  // square working pixels
     cv::Point2f inner;  // the relocated inner point
     int iterations = 0;
+    // AreaMode::refined: the fill ran past its limit (fill_limit, fill_growth) and was redone
+    // within the selected blocks: the outline has a gap the region ran out through.
+    bool leaked = false;
     // EstimatorSettings::extremity: the region crosses the image border, and this is its far
     // end (centroid, area, and the inner point nearest that centroid). Whether it replaces the
     // whole is the caller's choice: the far end is the target when it moves (ImageEvidence).
@@ -58,6 +61,16 @@ class Estimator {
     // for AreaMode::refined's diagonal steps (EstimatorSettings::diagonal_tolerance); it must
     // outlive those estimates. Without it the fill never steps diagonally.
     virtual void use_color(const cv::Mat* color) noexcept { (void)color; }
+    // The Sobel magnitude (CV_8U, the edge image's size) of the frame the next estimates are
+    // of, and the areas a target's projection can have (square working pixels), for
+    // EstimatorSettings::weak_edge_threshold; it must outlive those estimates. Without it an
+    // estimate is never redone on the weaker edges.
+    struct Magnitude {
+        const cv::Mat* image = nullptr;
+        double smallest = 0.0;
+        double largest = 0.0;
+    };
+    virtual void use_magnitude(const Magnitude& magnitude) noexcept { (void)magnitude; }
     // The target was dropped or a new one picked: what the estimator kept from the last frame's
     // estimate (EstimatorSettings::fill_growth) goes.
     virtual void forget_target() noexcept {}
