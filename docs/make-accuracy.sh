@@ -14,8 +14,10 @@ for preset in realworld hd60 pause interfering nonconvex fast flicker person ski
       --out "$renders/${preset}_$seed" >/dev/null
   done
 done
+# The scorer needs OpenCV's Python bindings (Debian: python3-opencv); its errors are shown.
 table=$(python3 "$scorer" "$@" "$renders"/* --peers camshift,csrt \
-          --raypoint "$build/raypoint track {video} --format jsonl" 2>/dev/null | grep -v '^{')
+          --raypoint "$build/raypoint track {video} --format jsonl" | grep -v '^{' || true)
+[ -n "$table" ] || { echo "make-accuracy.sh: the scorer printed no table" >&2; exit 1; }
 doc=$(dirname "$0")/accuracy.md
 python3 - "$doc" "$table" <<'PY'
 import sys

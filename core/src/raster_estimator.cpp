@@ -40,7 +40,8 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     filled_.assign(pixels, 0);
     weak_pixels_.assign(ray_pitch_ * static_cast<std::size_t>(height_), 0);
     weak_edges_ = cv::Mat(height_, width_, CV_8U, weak_pixels_.data(), ray_pitch_);
-    on_border_.assign(static_cast<std::size_t>(2 * (width_ + height_)), 0);
+    on_border_.assign(2 * (static_cast<std::size_t>(width_) + static_cast<std::size_t>(height_)),
+                      0);
     queue_.assign(pixels, cv::Point());
 }
 
