@@ -67,7 +67,8 @@ cv::Mat outline_of(const cv::Mat& mask) {
 }
 
 TEST(RasterExtremity, ANarrowForearmIsALimb) {
-    // A forearm 7 px wide inside its outline where it crosses, as a sleeve is at 160x120.
+    // A forearm 7 px wide inside its outline where it crosses: the rendered sleeves' forearms
+    // meet the border in runs under 8 px at 160x120.
     cv::Mat mask(120, 160, CV_8U, cv::Scalar(0));
     cv::rectangle(mask, cv::Rect(75, 50, 11, 70), cv::Scalar(255), cv::FILLED);
     cv::circle(mask, {80, 35}, 18, cv::Scalar(255), cv::FILLED);

@@ -91,8 +91,9 @@ struct EstimatorSettings {
     // 0 = the whole region, as in the paper. 0.5 takes a rendered hand off its sleeve (0% to
     // 100% tracked) and loses no clip; 0.4 and 0.6 each lose one (docs/settings.md).
     double extremity = 0.5;
-    // 3-6 take a rendered forearm in a sleeve (6-8 px wide at 160x120) off the hand, 8 does
-    // not; a run of all the border pixels at 16, the earlier rule, missed it (docs/settings.md).
+    // 3-6 take a rendered forearm in a sleeve (its run along the border under 8 px at 160x120)
+    // off the hand, 8 does not; 16 border pixels in all, the earlier rule, missed it
+    // (docs/settings.md).
     int extremity_contact = 4;
     // AreaMode::refined: the fill also steps diagonally between two pixels whose colours differ
     // by at most this (sum of |channel difference|), crossing a one-pixel diagonal line of edge
