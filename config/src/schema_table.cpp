@@ -311,8 +311,8 @@ const std::vector<Key>& schema() {
             [](auto& c) -> auto& { return c.core.pointer.click.baseline_seconds; }),
         real_key(
             "click", "right_seconds", 0.0, 10.0,
-            "a push held still this many seconds presses the right button, pulling back "
-            "releases it (0 = off); with it on, a push's left press waits for the pull-back or "
+            "a push held still this many seconds, then pulled back without moving, "
+            "right-clicks (0 = off); with it on, a push's left press waits for the pull-back or "
             "a move",
             [](auto& c) -> auto& { return c.core.pointer.click.right_seconds; }),
         real_key(
@@ -327,8 +327,8 @@ const std::vector<Key>& schema() {
             [](auto& c) -> auto& { return c.core.pointer.click.double_seconds; }),
         real_key(
             "click", "hold_radius", 0.0, 1.0,
-            "frame widths a held push may move and still be still (right click); farther, it "
-            "drags or scrolls",
+            "frame widths a held push may move before it drags or scrolls (right_seconds or "
+            "scroll_gain on)",
             [](auto& c) -> auto& { return c.core.pointer.click.hold_radius; }),
         // [dwell] click.mode = dwell
         real_key(

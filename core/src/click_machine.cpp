@@ -24,8 +24,8 @@ std::string_view to_string(ClickState state) noexcept {
             return "refractory";
         case ClickState::holding:
             return "holding";
-        case ClickState::right_pressed:
-            return "right_pressed";
+        case ClickState::right_armed:
+            return "right_armed";
         case ClickState::scrolling:
             return "scrolling";
     }
@@ -35,8 +35,7 @@ std::string_view to_string(ClickState state) noexcept {
 ClickMachine::ClickMachine(const ClickSettings& settings) noexcept : settings_(settings) {}
 
 bool ClickMachine::release_all() noexcept {
-    const bool down = state_ == ClickState::pressed || state_ == ClickState::dragging ||
-                      state_ == ClickState::right_pressed;
+    const bool down = state_ == ClickState::pressed || state_ == ClickState::dragging;
     state_ = ClickState::inactive;
     held_since_.reset();
     clicked_at_.reset();
@@ -52,10 +51,7 @@ ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, b
     if (!scale || !(*scale > 0.0) || !ready) {
         // Whatever the state, the button comes up: nothing may stay pressed without a target
         // the user can see being tracked.
-        const bool right = state_ == ClickState::right_pressed;
-        const bool down = release_all();
-        result_.release = down && !right;
-        result_.right_release = down && right;
+        result_.release = release_all();
     }
     if (!scale || !(*scale > 0.0)) {
         baseline_ = 0.0;
@@ -92,8 +88,8 @@ ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, b
         case ClickState::holding:
             on_holding();
             break;
-        case ClickState::right_pressed:
-            on_right_pressed();
+        case ClickState::right_armed:
+            on_right_armed();
             break;
         case ClickState::scrolling:
             on_scrolling();
@@ -141,8 +137,8 @@ void ClickMachine::release() noexcept {
     } else {
         clicked_at_.reset();
     }
-    result_.release = state_ != ClickState::right_pressed && state_ != ClickState::scrolling;
-    result_.right_release = state_ == ClickState::right_pressed;
+    result_.release = state_ == ClickState::pressed || state_ == ClickState::dragging ||
+                      state_ == ClickState::holding;
     state_ = ClickState::refractory;
     released_at_ = now_;
     held_since_.reset();
@@ -158,7 +154,6 @@ void ClickMachine::confirm() noexcept {
         // Which gesture it is shows only after the press: no button until then.
         state_ = ClickState::holding;
         held_at_ = where_;
-        still_at_ = where_;
         still_scale_ = scale_;
         still_since_ = now_;
     } else {
@@ -266,33 +261,16 @@ void ClickMachine::on_holding() noexcept {
         release();
         return;
     }
-    const cv::Point2d moved = where_ - held_at_;
-    if (cv::norm(moved) > settings_.hold_radius) {
-        if (settings_.scroll_gain > 0.0 && std::abs(moved.y) > std::abs(moved.x)) {
-            state_ = ClickState::scrolling;
-            result_.scroll = -moved.y;  // y grows downward; up scrolls up
-            scroll_y_ = where_.y;
-        } else {
-            state_ = ClickState::dragging;
-            press_left();
-        }
-        return;
-    }
-    // Still: near where the stillness began, in place and in size (start_rise is the rise
-    // that tells a push from noise). Half the radius: a drag that starts slowly (and the
-    // smoothed position lags it) restarts the time before it leaves the radius and drags.
-    if (cv::norm(where_ - still_at_) > settings_.hold_radius / 2 ||
-        std::abs(scale_ / still_scale_ - 1.0) > settings_.start_rise) {
-        still_at_ = where_;
+    if (moved_while_held()) return;
+    // Still in size too: a slow push still growing, or one that already comes back, is not a
+    // held push (start_rise is the rise that tells a push from noise).
+    if (std::abs(scale_ / still_scale_ - 1.0) > settings_.start_rise) {
         still_scale_ = scale_;
         still_since_ = now_;
     }
     if (settings_.right_seconds > 0.0) {
-        if (seconds_since(still_since_) >= settings_.right_seconds) {
-            state_ = ClickState::right_pressed;
-            result_.right_press = true;
-            held_since_.reset();
-        }
+        if (seconds_since(still_since_) >= settings_.right_seconds)
+            state_ = ClickState::right_armed;
     } else if (seconds_since(pressed_at_) >= settings_.drag_seconds) {
         // Scroll alone: holding still drags, as without it.
         state_ = ClickState::dragging;
@@ -300,8 +278,30 @@ void ClickMachine::on_holding() noexcept {
     }
 }
 
-void ClickMachine::on_right_pressed() noexcept {
-    if (pulled_back()) release();
+bool ClickMachine::moved_while_held() noexcept {
+    const cv::Point2d moved = where_ - held_at_;
+    if (cv::norm(moved) <= settings_.hold_radius) return false;
+    if (settings_.scroll_gain > 0.0 && std::abs(moved.y) > std::abs(moved.x)) {
+        state_ = ClickState::scrolling;
+        result_.scroll = -moved.y;  // y grows downward; up scrolls up
+        scroll_y_ = where_.y;
+    } else {
+        state_ = ClickState::dragging;
+        press_left();
+    }
+    return true;
+}
+
+void ClickMachine::on_right_armed() noexcept {
+    // The right click comes whole at the pull-back, not when the stillness was reached: a
+    // drag whose hand rests before it moves is still a drag.
+    if (pulled_back()) {
+        result_.right_press = true;
+        result_.right_release = true;
+        release();
+        return;
+    }
+    moved_while_held();
 }
 
 void ClickMachine::on_scrolling() noexcept {

@@ -77,7 +77,7 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
             // the frame a held push starts a drag, whose press goes where the push began.
             const bool hold = step.press || step.state == ClickState::pressed ||
                               step.state == ClickState::holding ||
-                              step.state == ClickState::right_pressed ||
+                              step.state == ClickState::right_armed ||
                               step.state == ClickState::scrolling;
             const Motion motion = mapper_.update(now, has_target, position, hold);
             depth_click(step, motion, command);

@@ -44,10 +44,30 @@ TEST(ClickGestures, APushHeldStillRightClicks) {
         { 500,   T,       0.490, 0.500, 0.250,  "holding",       "rel -5 0"},  // undone, no button
         { 600,   T,       0.490, 0.500, 0.255,  "holding",       ""},          // still since 500
         { 900,   T,       0.492, 0.501, 0.252,  "holding",       ""},
-        {1000,   T,       0.491, 0.500, 0.250,  "right_pressed", "+right"},    // 0.5 s still
-        {1100,   T,       0.491, 0.500, 0.240,  "right_pressed", ""},          // frozen
-        {1200,   T,       0.491, 0.500, 0.215,  "refractory",    "-right"},    // pulled back
+        {1000,   T,       0.491, 0.500, 0.250,  "right_armed",   ""},   // 0.5 s still
+        {1100,   T,       0.491, 0.500, 0.240,  "right_armed",   ""},   // frozen, no button
+        {1200,   T,       0.491, 0.500, 0.215,  "refractory",    "+right -right"},  // pulled back
         {1300,   T,       0.491, 0.500, 0.200,  "refractory",    ""},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, AHeldPushThatRestsBeforeMovingStillDrags) {
+    // Still for 0.6 s (right click armed), then moved sideways: a drag, not a right click. A
+    // hand often rests a moment before it starts to drag.
+    PointerController pointer(gestures(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.600, 0.400, 0.200,  "idle",          ""},
+        { 300,   T,       0.600, 0.400, 0.205,  "idle",          ""},
+        { 400,   T,       0.600, 0.400, 0.240,  "rising",        ""},
+        { 500,   T,       0.600, 0.400, 0.260,  "holding",       ""},
+        { 900,   T,       0.600, 0.400, 0.260,  "holding",       ""},
+        {1100,   T,       0.590, 0.400, 0.255,  "right_armed",   ""},   // 0.01: within
+        {1200,   T,       0.570, 0.400, 0.255,  "dragging",      "+left"},
+        {1300,   T,       0.550, 0.400, 0.255,  "dragging",      "rel 20 0"},
+        {1400,   T,       0.550, 0.400, 0.210,  "refractory",    "-left"},
     });
     // clang-format on
 }
@@ -250,7 +270,7 @@ TEST(ClickGestures, DoubleClickWithRightClickOnComesAtTheSecondPullBack) {
     // clang-format on
 }
 
-TEST(ClickGestures, LosingTheTargetReleasesTheRightButton) {
+TEST(ClickGestures, LosingTheTargetWhileArmedClicksNothing) {
     PointerController pointer(gestures(), aspect);
     // clang-format off
     play(pointer, {
@@ -258,15 +278,15 @@ TEST(ClickGestures, LosingTheTargetReleasesTheRightButton) {
         { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
         { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
         { 400,   T,       0.500, 0.500, 0.250,  "holding",       ""},
-        { 900,   T,       0.500, 0.500, 0.250,  "right_pressed", "+right"},
-        {1000,   S,       0.0,   0.0,   0.0,    "inactive",      "-right"},
+        { 900,   T,       0.500, 0.500, 0.250,  "right_armed",   ""},
+        {1000,   S,       0.0,   0.0,   0.0,    "inactive",      ""},
     });
     // clang-format on
 }
 
 TEST(ClickGestures, AOneFrameGlitchWhileHeldNeitherScrollsNorClicks) {
     // press_hold_seconds 0.05: one frame of a smaller area does not end the hold, so the
-    // right click still comes.
+    // right click is still armed and comes at the pull-back.
     PointerSettings s = gestures();
     s.click.press_hold_seconds = 0.05;
     PointerController pointer(s, aspect);
@@ -279,7 +299,9 @@ TEST(ClickGestures, AOneFrameGlitchWhileHeldNeitherScrollsNorClicks) {
         { 500,   T,       0.500, 0.500, 0.250,  "holding",       ""},
         { 600,   T,       0.500, 0.500, 0.200,  "holding",       ""},   // one frame back
         { 700,   T,       0.500, 0.500, 0.250,  "holding",       ""},
-        {1200,   T,       0.500, 0.500, 0.250,  "right_pressed", "+right"},  // 0.5 s since 700
+        {1200,   T,       0.500, 0.500, 0.250,  "right_armed",   ""},   // 0.5 s since 700
+        {1300,   T,       0.500, 0.500, 0.210,  "right_armed",   ""},   // back for 0.05 s
+        {1400,   T,       0.500, 0.500, 0.210,  "refractory",    "+right -right"},
     });
     // clang-format on
 }

@@ -28,10 +28,12 @@ enum class ClickState {
     dragging,    // held pushed past drag_seconds: the button stays down, x and y move
     refractory,  // just released: no press for refractory_seconds nor before the rise settles
     // With right click or scroll on: pushed, no button yet; x and y frozen. Pulling back
-    // clicks, moving drags or scrolls, holding still right-clicks.
+    // clicks, moving drags or scrolls, holding still arms the right click.
     holding,
-    right_pressed,  // the right button is down, x and y frozen; pulling back releases it
-    scrolling,      // no button: vertical motion turns the wheel; pulling back stops
+    // Held still for right_seconds, no button yet; x and y frozen. Pulling back right-clicks
+    // (press and release), moving still drags or scrolls.
+    right_armed,
+    scrolling,  // no button: vertical motion turns the wheel; pulling back stops
 };
 
 std::string_view to_string(ClickState state) noexcept;
@@ -83,11 +85,14 @@ class ClickMachine {
     void on_dragging() noexcept;
     void on_refractory() noexcept;
     void on_holding() noexcept;
-    void on_right_pressed() noexcept;
+    void on_right_armed() noexcept;
     void on_scrolling() noexcept;
 
     void confirm() noexcept;  // RISING's push reached the press: PRESSED or HOLDING
     void press_left() noexcept;
+    // HOLDING, RIGHT_ARMED: past hold_radius from where the hold began, the drag or the scroll
+    // starts (true).
+    bool moved_while_held() noexcept;
 
     void follow_baseline() noexcept;
     double seconds_since(Timestamp then) const noexcept;
@@ -114,10 +119,9 @@ class ClickMachine {
     // The last left click's release, for double_seconds; nothing after a double click.
     std::optional<Timestamp> clicked_at_;
     bool doubled_ = false;  // the button down now came with a double click
-    // HOLDING: where the hold began (x, y frame widths) and where and since when the target
-    // has been still (within hold_radius and start_rise of the still anchor).
+    // HOLDING: where the hold began (x, y frame widths), and since when the target's size has
+    // been still (within start_rise of still_scale_).
     cv::Point2d held_at_;
-    cv::Point2d still_at_;
     double still_scale_ = 0.0;
     Timestamp still_since_ = 0;
     double scroll_y_ = 0.0;  // SCROLLING: y of the previous frame
