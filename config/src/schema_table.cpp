@@ -174,6 +174,11 @@ const std::vector<Key>& schema() {
         integer_key(
             "tracking", "recovery_far", 1, 200, "far recovery offset, working pixels",
             [](auto& c) -> auto& { return c.core.tracking.recovery_far; }),
+        boolean_key(
+            "tracking", "recover_small",
+            "a target whose estimate is under min_area tries the recovery points before it is "
+            "lost (false: lost at once, as in the paper)",
+            [](auto& c) -> auto& { return c.core.tracking.recover_small; }),
         choice_key<InstructionsSetting>(
             "tracking", "instructions",
             "preprocessing's vector instructions: auto (measured at start) or one for both stages",

@@ -218,12 +218,13 @@ void ClickMachine::on_rising() noexcept {
         state_ = ClickState::idle;
         held_since_.reset();
         follow_baseline();
+    } else if (!carried && held(high)) {
+        // Before the dip: at 10 fps a quick push's last frame in is also its first frame back.
+        confirm();
     } else if (carried || dipped) {
         state_ = ClickState::drifting;
         held_since_.reset();
         follow_baseline();
-    } else if (held(high)) {
-        confirm();
     } else if (!in_time && !high) {
         state_ = ClickState::drifting;
         follow_baseline();

@@ -17,6 +17,7 @@ Settings paper_settings() {
     settings.estimator.diagonal_tolerance = 0;
     settings.estimator.fill_growth = 0.0;
     settings.tracking.keep_still_target = false;
+    settings.tracking.recover_small = false;
     settings.tracking.abandon_seconds = 0.0;
     settings.tracking.search_weighting = SearchWeighting::all;
     settings.output.smoothing = SmoothingKind::ema;

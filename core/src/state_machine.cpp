@@ -137,6 +137,12 @@ bool StateMachine::on_tracking() noexcept {
         return true;
     }
     if (const LossReason reason = area_check(candidate_.area); reason != LossReason::none) {
+        // Not a target's first estimate: its only point is the search's, with no area to
+        // compare a recovered region with.
+        if (reason == LossReason::too_small && settings_.recover_small && accepted_area_ > 0.0) {
+            state_ = TrackerState::recovering;
+            return false;
+        }
         drop_target(reason);
         return true;
     }
@@ -245,11 +251,13 @@ void StateMachine::drop_target(LossReason reason) noexcept {
     elsewhere_since_.reset();
     result_.has_target = false;
     result_.lost = true;
+    accepted_area_ = 0.0;
     evidence_->forget_target();
 }
 
 void StateMachine::accept(const Estimate& estimate) noexcept {
     inner_ = estimate.inner;
+    accepted_area_ = estimate.area;
     result_.estimate = estimate;
     result_.has_target = true;
     result_.area_known = true;

@@ -115,7 +115,13 @@ INSTANTIATE_TEST_SUITE_P(
                       Expectation{"desk", 0.98, 1.5, std::nullopt, 0.5, 7},
                       Expectation{"sleeve", 0.98, 1.5, std::nullopt},
                       Expectation{"sleeve", 0.98, 1.5, std::nullopt, 0.5, 7},
-                      Expectation{"sleeve", 0.98, 1.5, std::nullopt, 0.5, 13}),
+                      Expectation{"sleeve", 0.98, 1.5, std::nullopt, 0.5, 13},
+                      // 15 fps with strong blur, other seeds: the fast hand's centroid lands
+                      // off the hand and the estimate is too small; the recovery points find
+                      // it again (tracking.recover_small; without it seeds 13 and 17 fail here).
+                      Expectation{"fast", 0.98, 1.5, std::nullopt, 0.5, 7},
+                      Expectation{"fast", 0.98, 1.5, std::nullopt, 0.5, 13},
+                      Expectation{"fast", 0.98, 1.5, std::nullopt, 0.5, 17}),
     [](const ::testing::TestParamInfo<Expectation>& param) {
         std::string name(param.param.preset);
         if (param.param.seed != 0) name += "_seed_" + std::to_string(param.param.seed);

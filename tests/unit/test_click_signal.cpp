@@ -169,5 +169,26 @@ TEST(PushModel, ARiseThatFallsBackIsNotAPush) {
     // clang-format on
 }
 
+TEST(PushModel, AQuickPushAtTenFpsPressesOnItsFirstFrameBack) {
+    // press_hold_seconds 0.05 at 10 fps: the rise must be at the press on two frames. A push of
+    // 0.2 s in and straight back is at the press on its last frame in and its first frame back,
+    // which is also 6% under its largest: held at the press, it presses before the dip counts.
+    PointerSettings settings = depth();
+    settings.click.push_dip = 0.05;
+    settings.click.press_hold_seconds = 0.05;
+    PointerController pointer(settings, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.5,  0.260,  "rising",     ""},       // +30%
+        { 500,   T,       0.5,  0.5,  0.244,  "pressed",    "+left"},  // +22%, 6% under 0.26
+        { 600,   T,       0.5,  0.5,  0.200,  "pressed",    ""},
+        { 700,   T,       0.5,  0.5,  0.200,  "refractory", "-left"},
+    });
+    // clang-format on
+}
+
 }  // namespace
 }  // namespace raypoint::core

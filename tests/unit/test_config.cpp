@@ -331,6 +331,7 @@ TEST(Presets, PaperSwitchesEveryDeviationBack) {
     EXPECT_EQ(config.core.preprocess.edge_source, core::EdgeSource::luma);
     EXPECT_EQ(config.core.estimator.area_mode, core::AreaMode::blocks);
     EXPECT_FALSE(config.core.tracking.keep_still_target);
+    EXPECT_FALSE(config.core.tracking.recover_small);
     EXPECT_EQ(config.core.tracking.search_weighting, core::SearchWeighting::all);
     EXPECT_EQ(config.core.output.smoothing, core::SmoothingKind::ema);
     EXPECT_EQ(config.core.estimator.rays, 16);  // the preset is a whole configuration

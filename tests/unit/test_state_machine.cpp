@@ -299,6 +299,37 @@ TEST(StateMachine, RecoveryFailsWhenTheReestimateDoesNotMatch) {
     // clang-format on
 }
 
+TEST(StateMachine, ATooSmallEstimateTriesTheRecoveryPointsWithRecoverSmall) {
+    // A tracked target's estimate comes out at 100 px (under 384) with its inner point on the
+    // wall: the recovery point (60,50) 20 px left matches and its estimate is taken. A target's
+    // first estimate is not recovered so, and the paper loses it at once.
+    TrackingSettings s = paper();
+    s.recover_small = true;
+    StateMachine machine(s, paper_size);
+    const Paint scene{wall, {{P, skin}, {{60.0F, 50.0F}, skin}}};
+    // clang-format off
+    const auto played = play(machine, {
+        {0.0,  0,     none, {},                                  {wall, {{P, skin}}}, St::searching},
+        {0.1,  60000, P,    {},                                  {wall, {{P, skin}}}, St::tracking,  Ev::acquired},
+        {0.2,  9000,  none, {est(Q, 100)},                       scene,               St::searching, Ev::too_small},
+        {0.3,  60000, P,    {},                                  {wall, {{P, skin}}}, St::tracking,  Ev::acquired},
+        {0.4,  9000,  none, {est(P, 1000)},                      {wall, {{P, skin}}}, St::tracking},
+        {0.5,  9000,  none, {est(Q, 100), est({60, 50}, 1100)},  scene,               St::tracking,  Ev::recovered},
+        {0.6,  9000,  none, {est(Q, 100), est({60, 50}, 100)},   scene,               St::searching, Ev::too_small},
+    });
+    // clang-format on
+    EXPECT_EQ(played.estimated_at[5][1], cv::Point2f(60.0F, 50.0F));
+    StateMachine paper_machine(paper(), paper_size);
+    // clang-format off
+    play(paper_machine, {
+        {0.0,  0,     none, {},              {wall, {{P, skin}}}, St::searching},
+        {0.1,  60000, P,    {},              {wall, {{P, skin}}}, St::tracking,  Ev::acquired},
+        {0.2,  9000,  none, {est(P, 1000)},  {wall, {{P, skin}}}, St::tracking},
+        {0.3,  9000,  none, {est(Q, 100)},   scene,               St::searching, Ev::too_small},
+    });
+    // clang-format on
+}
+
 // Failed inner point C; the recovery point `outside` (off the 160x120 image) would match
 // exactly, `border` (inside, often on the first or last row or column) matches within 40 and
 // is taken.

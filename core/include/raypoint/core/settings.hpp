@@ -145,6 +145,13 @@ struct TrackingSettings {
     double extremity_motion = 0.1;
     int recovery_near = 10;  // recovery offsets, working pixels
     int recovery_far = 20;
+    // A tracked target whose estimate comes out under min_area tries the recovery points, as
+    // after a colour change, instead of being lost (the paper loses it, 4.2). A fast hand's
+    // last centroid lands between its fingers or on the background behind it; once lost, a
+    // hand that then stops is never searched out again. Rendered fast clips at seeds 7, 13,
+    // 17: 97.0%, 93.9%, 83.6% tracked to 100%. A target's first estimate is not recovered: from
+    // the search's point a neighbour of its colour took desk and person clips to 0%.
+    bool recover_small = true;
 };
 
 struct OutputSettings {
