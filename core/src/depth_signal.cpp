@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "raypoint/core/depth_signal.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace raypoint::core {
@@ -13,8 +14,10 @@ void DepthSignal::reset() noexcept {
     absorbed_ = false;
 }
 
-std::optional<double> DepthSignal::update(std::optional<double> scale,
-                                          cv::Point2d centroid) noexcept {
+std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point2d centroid,
+                                          Timestamp timestamp) noexcept {
+    const Timestamp previous_time = previous_time_;
+    previous_time_ = timestamp;
     absorbed_ = false;
     given_back_ = false;
     if (!scale || !(*scale > 0.0)) {
@@ -32,7 +35,11 @@ std::optional<double> DepthSignal::update(std::optional<double> scale,
         // moves it little (the gesture set's pushes: a median 0.01 of the size a frame), a
         // region that takes in or drops a piece moves it by about the piece's share.
         const double jump = cv::norm(centroid - previous_centroid_) / previous_;
-        if (std::abs(step) >= settings_.glitch_step && jump >= settings_.glitch_jump) {
+        // glitch_step is a step between frames 1/30 s apart: a push brings the target closer
+        // by three times as much between frames at 10 fps (a quick push is 2-3 frames there).
+        const double frames =
+            std::max(1.0, static_cast<double>(timestamp - previous_time) / (1e6 / 30.0));
+        if (std::abs(step) >= settings_.glitch_step * frames && jump >= settings_.glitch_jump) {
             pending_ = true;
             before_centroid_ = previous_centroid_;
             before_scale_ = previous_;

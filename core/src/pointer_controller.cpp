@@ -71,7 +71,7 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
             const cv::Point2d where(position.x, position.y / frame_aspect_);
             const std::optional<double> scale = depth_.update(
                 has_target ? std::optional<double>(std::sqrt(*frame.area)) : std::nullopt,
-                cv::Point2d(frame.centroid.x, frame.centroid.y / frame_aspect_));
+                cv::Point2d(frame.centroid.x, frame.centroid.y / frame_aspect_), now);
             const ClickStep step = clicker_.step(now, scale, ready, where, depth_.given_back());
             // x and y stay where the push began while a button is down or may yet be, and on
             // the frame a held push starts a drag, whose press goes where the push began.

@@ -50,6 +50,27 @@ TEST(DepthSignal, AStepWithACentroidJumpThatStaysIsNotAPush) {
     // clang-format on
 }
 
+TEST(DepthSignal, TheStepLimitGrowsWithTheTimeBetweenFrames) {
+    // +15% with the centroid 0.15 of the size away: at 30 fps a step over glitch_step (8%) the
+    // signal absorbs; at 10 fps under its 24%, a push's own frame, which rises.
+    PointerController at30(glitches(), aspect);
+    // clang-format off
+    play(at30, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 233,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 267,   T,       0.47, 0.5,  0.230,  "idle",       "rel 30 0"},   // absorbed
+    });
+    PointerController at10(glitches(), aspect);
+    play(at10, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.47, 0.5,  0.230,  "rising",     "rel 30 0"},   // +15%
+    });
+    // clang-format on
+}
+
 TEST(DepthSignal, AOneFrameGlitchThatComesBackIsNotAPush) {
     // 0.035 -> 0.10 -> 0.035 of the frame's area has been seen: sqrt(area) +70% for one frame.
     PointerController pointer(glitches(), aspect);

@@ -15,6 +15,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "raypoint/core/frame.hpp"
 #include "raypoint/core/pointer_settings.hpp"
 
 namespace raypoint::core {
@@ -26,7 +27,9 @@ class DepthSignal {
     // scale: sqrt(area) this frame, or nullopt without a target (which starts over).
     // centroid: the tracker's raw centroid this frame, frame widths on both axes.
     // Returns the scale with the region's steps taken out; nullopt without a target.
-    std::optional<double> update(std::optional<double> scale, cv::Point2d centroid) noexcept;
+    // timestamp: the frame's; glitch_step is per 1/30 s, scaled up for frames further apart.
+    std::optional<double> update(std::optional<double> scale, cv::Point2d centroid,
+                                 Timestamp timestamp = 0) noexcept;
 
     // Whether the last update absorbed a step.
     bool absorbed() const noexcept { return absorbed_; }
@@ -37,7 +40,9 @@ class DepthSignal {
 
   private:
     ClickSettings settings_;
-    double previous_ = 0.0;  // the raw scale of the previous frame; 0: none
+    double previous_ = 0.0;
+    Timestamp previous_time_ =
+        0;  // the previous frame's timestamp  // the raw scale of the previous frame; 0: none
     cv::Point2d previous_centroid_;
     double gain_ = 1.0;  // signal = raw scale x gain; each absorbed step rescales it
     // The step absorbed on the previous frame: the centroid, scale and gain before it. When
