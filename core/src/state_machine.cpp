@@ -137,9 +137,9 @@ bool StateMachine::on_tracking() noexcept {
         return true;
     }
     if (const LossReason reason = area_check(candidate_.area); reason != LossReason::none) {
-        // Not a target's first estimate: its only point is the search's, with no area to
-        // compare a recovered region with.
-        if (reason == LossReason::too_small && settings_.recover_small && accepted_area_ > 0.0) {
+        // Not a target's first estimate: from the search's point, the recovery points find
+        // neighbours of the target's colour.
+        if (reason == LossReason::too_small && settings_.recover_small && estimated_) {
             state_ = TrackerState::recovering;
             return false;
         }
@@ -251,13 +251,13 @@ void StateMachine::drop_target(LossReason reason) noexcept {
     elsewhere_since_.reset();
     result_.has_target = false;
     result_.lost = true;
-    accepted_area_ = 0.0;
+    estimated_ = false;
     evidence_->forget_target();
 }
 
 void StateMachine::accept(const Estimate& estimate) noexcept {
     inner_ = estimate.inner;
-    accepted_area_ = estimate.area;
+    estimated_ = true;
     result_.estimate = estimate;
     result_.has_target = true;
     result_.area_known = true;

@@ -40,9 +40,8 @@ class DepthSignal {
 
   private:
     ClickSettings settings_;
-    double previous_ = 0.0;
-    Timestamp previous_time_ =
-        0;  // the previous frame's timestamp  // the raw scale of the previous frame; 0: none
+    double previous_ = 0.0;        // the raw scale of the previous frame; 0: none
+    Timestamp previous_time_ = 0;  // the previous frame's timestamp
     cv::Point2d previous_centroid_;
     double gain_ = 1.0;  // signal = raw scale x gain; each absorbed step rescales it
     // The step absorbed on the previous frame: the centroid, scale and gain before it. When

@@ -96,8 +96,7 @@ class StateMachine {
     cv::Point2f inner_;                         // the inner point after the previous frame
     Estimate candidate_;                        // TRACKING's estimate, waiting for VALIDATING
     cv::Vec3f reference_color_;                 // the target's colour the last time it moved
-    // The area (working pixels) last accepted; 0 before a target's first estimate.
-    double accepted_area_ = 0.0;
+    bool estimated_ = false;  // the target has had an estimate accepted since it was picked
 
     // The frame being stepped.
     Timestamp now_ = 0;
