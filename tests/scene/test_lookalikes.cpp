@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The renderer's skin lookalikes: a sleeve behind the hand, a person behind it, a skin-coloured
-// wall and a wooden desk. The truth stays the hand's alone, exactly.
+// wall and a wooden desk; and a ball passing behind the hand. The truth stays the hand's alone,
+// exactly.
 
 #include <cmath>
 
@@ -65,6 +66,43 @@ TEST(SceneRenderer, PersonMovesAndIsNotTheTruth) {
     cv::absdiff(first.bgr, later.bgr, changed);
     cv::cvtColor(changed, changed, cv::COLOR_BGR2GRAY);
     EXPECT_GT(cv::countNonZero(changed > 20), 200);
+}
+
+// The passing ball crosses behind the hand from the right to the left, is drawn behind it (the
+// hand's inside does not change) and is never the truth: the mask is the hand's with or
+// without it.
+TEST(SceneRenderer, PasserCrossesBehindTheHandAndIsNotTheTruth) {
+    SceneSpec bare = still(Target::hand, 0.9, 0.5, 0.5);
+    bare.target_colour = Colour{128, 160, 214};
+    bare.seconds = 2;
+    SceneSpec passing = bare;
+    passing.passes = {0.0};
+    passing.pass_seconds = 1.0;
+    passing.pass_colour = Colour{20, 20, 200};  // red, to find it
+    const Renderer with(passing);
+    const Renderer without(bare);
+    const auto changed_box = [&](int index, const RenderedFrame& a) {
+        const RenderedFrame b = with.render(index);
+        EXPECT_EQ(cv::norm(a.mask, b.mask, cv::NORM_INF), 0.0);
+        cv::Mat changed;
+        cv::absdiff(a.bgr, b.bgr, changed);
+        cv::cvtColor(changed, changed, cv::COLOR_BGR2GRAY);
+        cv::Mat inside;
+        cv::erode(b.mask, inside, cv::Mat(), {-1, -1}, 2);
+        EXPECT_EQ(cv::countNonZero((changed > 30) & inside), 0) << "frame " << index;
+        return cv::boundingRect(changed > 30);
+    };
+    // A quarter of the way (frame 8 of 30 a second): right of the middle; three quarters: left.
+    const cv::Rect early = changed_box(8, without.render(8));
+    const cv::Rect late = changed_box(22, without.render(22));
+    const int middle = bare.width / 2;
+    EXPECT_GT(early.x + early.width / 2, middle);
+    EXPECT_LT(late.x + late.width / 2, middle);
+    // A ball a quarter of the frame's height (the default pass_size) across, at mid-height.
+    EXPECT_NEAR(early.height, bare.height / 4, bare.height / 20);
+    EXPECT_NEAR(early.y + early.height / 2, bare.height / 2, bare.height / 20);
+    // Gone after its pass.
+    EXPECT_EQ(changed_box(45, without.render(45)).area(), 0);
 }
 
 // A skin-coloured wall and a wooden desk are of the hand's hue: their mean colour's hue is

@@ -10,6 +10,7 @@
 
 #include "gesture_parts.hpp"
 #include "rng.hpp"
+#include "sprite.hpp"
 
 namespace raypoint::scene {
 
@@ -238,6 +239,26 @@ GestureClip motion_clip(std::uint32_t seed, int index, const std::string& motion
             k.depth = d0 * (1 + 0.05 * std::sin(2 * pi * t / 4));
             return k;
         };
+    } else if (motion == "pass") {
+        // Ordinary slow moves while a ball the size of a head or a toy (15-40% of the frame's
+        // height) crosses behind the target every 2-4 s, at about its height, in 0.8-2 s; its
+        // colour dark, light, or near the target's own.
+        for (double t = from + rng.uniform(0.3, 1.0); t < s.seconds; t += rng.uniform(2.0, 4.0))
+            s.passes.push_back(t);
+        s.pass_seconds = rng.uniform(0.8, 2.0);
+        s.pass_size = rng.uniform(0.15, 0.4);
+        s.pass_y = y0 + rng.uniform(-0.15, 0.15);
+        const double look = rng.uniform();
+        const double v = rng.uniform(0.6, 1.0);
+        s.pass_colour = look < 0.35   ? Colour{40 * v, 45 * v, 50 * v}
+                        : look < 0.65 ? Colour{200 * v, 205 * v, 210 * v}
+                                      : default_colour(s.target, s.background);
+        pose = [&, base = pose](double t) {
+            Keyframe k = base(t);
+            k.x += 0.06 * std::sin(2 * pi * t / 3.5 + phase);
+            k.depth = d0 * (1 + 0.03 * std::sin(2 * pi * t / 4.5));
+            return k;
+        };
     }
     if (motion == "wander") {
         // The renderer's own path: wanders in x, y and depth (3.5% to 10% of the frame).
@@ -272,10 +293,12 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
     int push_clips = 0;
     int motion_rounds = 0;
     int button_clips = 0;  // of each kind
+    int pass_clips = 0;    // a second object passing behind the target
     if (name == "full") {
         push_clips = 110;
         motion_rounds = 4;  // 7 motions x 4 + 2 more = 30 clips
         button_clips = 20;
+        pass_clips = 4;
     } else if (name == "ci") {
         push_clips = 6;
         motion_rounds = 0;
@@ -289,7 +312,8 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
     std::vector<GestureClip> clips;
     clips.reserve(static_cast<std::size_t>(push_clips) +
                   static_cast<std::size_t>(motion_rounds) * motions.size() + 3 +
-                  3 * static_cast<std::size_t>(button_clips));
+                  3 * static_cast<std::size_t>(button_clips) +
+                  static_cast<std::size_t>(pass_clips));
     for (int i = 0; i < push_clips; ++i)
         clips.push_back(push_clip(seed, i));
     int index = 0;
@@ -302,6 +326,9 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
                                                : std::vector<std::string>{"swipe", "lean"};
     for (const std::string& motion : extra)
         clips.push_back(motion_clip(seed, index++, motion, name == "ci" ? 16 : 26));
+    // After the others, so that adding them changed none of the clips above.
+    for (int i = 0; i < pass_clips; ++i)
+        clips.push_back(motion_clip(seed, index++, "pass", name == "ci" ? 16 : 26));
     // Their own seeds, so adding them changed none of the clips above.
     for (const GestureKind kind :
          {GestureKind::right, GestureKind::double_click, GestureKind::scroll_up}) {

@@ -89,6 +89,7 @@ std::string scene_json(const SceneSpec& spec, int frames) {
     field("bg", quoted(background_name(spec.background)));
     field("sleeve", spec.sleeve_colour ? "true" : "false");
     field("person", spec.person ? "true" : "false");
+    field("passes", std::to_string(spec.passes.size()));
     field("obj", quoted(spec.target == Target::sphere ? "sphere" : "hand"));
     field("fps", number(spec.fps, 6));
     field("noise", number(spec.noise_sigma, 6));

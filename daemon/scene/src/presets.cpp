@@ -260,6 +260,20 @@ SceneSpec make(std::string_view name, std::uint32_t seed) {
         s.drift_period = 3.0;
         return s;
     }
+    if (name == "passer") {
+        // realworld's room, hand and path (its seed) while a dark ball the size of a head (a
+        // quarter of the frame's height) crosses behind the hand every 2.5 s, at about its
+        // height, in 1.2 s: a second moving object the tracker must not take. Only the ball
+        // differs from realworld.
+        SceneSpec s = make("realworld", realworld_seed);
+        s.name = std::string(name);
+        s.passes = {3.5, 6.0, 8.5};
+        s.seconds = 10;
+        s.pass_seconds = 1.2;
+        s.pass_size = 0.25;
+        s.pass_y = 0.5;
+        return s;
+    }
     if (name == "skew") {
         // realworld's room and path (its seed) at twice its speed, through a cheap webcam's
         // rolling shutter: rows read over 30 ms of the 33 ms frame, up to ~10 px of shear at
@@ -275,11 +289,11 @@ SceneSpec make(std::string_view name, std::uint32_t seed) {
     return skin_lookalike(name, seed);
 }
 
-constexpr std::array<std::string_view, 24> names{
-    "ideal",    "lowlight", "interfering", "nonconvex", "realworld",  "hd60",
-    "exposure", "jpeg",     "fast",        "pause",     "push",       "rightdown",
-    "click",    "drag",     "flicker",     "drift",     "rightclick", "doubleclick",
-    "scroll",   "skew",     "person",      "skinwall",  "desk",       "sleeve"};
+constexpr std::array<std::string_view, 25> names{
+    "ideal",    "lowlight", "interfering", "nonconvex",   "realworld", "hd60",  "exposure",
+    "jpeg",     "fast",     "pause",       "push",        "rightdown", "click", "drag",
+    "flicker",  "drift",    "rightclick",  "doubleclick", "scroll",    "skew",  "person",
+    "skinwall", "desk",     "sleeve",      "passer"};
 
 }  // namespace
 

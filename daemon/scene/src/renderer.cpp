@@ -13,6 +13,7 @@
 #include "background.hpp"
 #include "camera.hpp"
 #include "measure.hpp"
+#include "passer.hpp"
 #include "person.hpp"
 #include "photometry.hpp"
 #include "placement.hpp"
@@ -31,6 +32,7 @@ struct Renderer::Assets {
     cv::Mat background;  // CV_32FC3, vignetted, at full light
     NoisePool noise;
     std::optional<Person> person;
+    std::optional<Passer> passer;
 
     explicit Assets(const SceneSpec& spec)
         : camera{spec.width, spec.height},
@@ -63,6 +65,7 @@ struct Renderer::Assets {
                 size, spec.target_colour.value_or(default_colour(Target::hand, spec.background)),
                 mix_seed(spec.seed, 11));
         }
+        if (!spec.passes.empty()) passer.emplace(size, spec);
     }
 };
 
@@ -95,6 +98,8 @@ void validate(const SceneSpec& s) {
               s.white_balance_drift < 1 && s.drift_period > 0,
           "drifts must be in [0, 1) and drift_period > 0");
     check(s.speed > 0, "speed must be > 0");
+    check(s.pass_seconds > 0 && s.pass_size > 0 && s.pass_size <= 2,
+          "pass_seconds must be > 0 and pass_size in (0, 2]");
     check(s.target_size_m > 0, "target_size_m must be > 0");
     check(s.push_depth >= 0 && s.push_depth < 1, "push_depth must be in [0, 1)");
     check(s.push_seconds > 0, "push_seconds must be > 0");
@@ -300,12 +305,11 @@ RenderedFrame Renderer::render(int index) const {
         if (band.mid) roi |= band.mid->bounds() & band.rows;
     }
     roi &= frame_rect;
-    // The person behind the target moves: this frame's background.
+    // The person and the passing object behind the target move: this frame's background.
     cv::Mat background = a.background;
-    if (a.person) {
-        background = a.background.clone();
-        a.person->draw(t, a.vignette, background);
-    }
+    if (a.person || a.passer) background = a.background.clone();
+    if (a.person) a.person->draw(t, a.vignette, background);
+    if (a.passer) a.passer->draw(t, spec_.blur / spec_.fps, a.vignette, background);
 
     RenderedFrame out;
     out.mask = cv::Mat::zeros(spec_.height, spec_.width, CV_8U);

@@ -16,6 +16,7 @@
 //   skinwall     skin hand against a warm beige or pink wall
 //   desk         skin hand over a wooden desk seen from above
 //   sleeve       skin hand on a forearm in a sleeve of nearly its colour (truth: the hand)
+//   passer       realworld with a dark ball crossing behind the hand every 2.5 s (10 s)
 
 #include <string>
 #include <string_view>

@@ -117,6 +117,16 @@ struct SceneSpec {
     // colour family, breathing and turning the head a little as a person at a desk does; part
     // of the background, not of the truth.
     bool person = false;
+    // A second object passing behind the target: a matte ball of pass_size (its diameter, a
+    // fraction of the frame's height) crossing the picture at pass_y (its centre, a fraction
+    // of the height) in pass_seconds, starting at each of these times (s), right to left, then
+    // left to right, alternately. Part of the background, not of the truth. Empty colour: dark
+    // grey.
+    std::vector<double> passes;
+    double pass_seconds = 1.5;
+    double pass_size = 0.25;
+    double pass_y = 0.5;
+    std::optional<Colour> pass_colour;
     std::uint32_t seed = 1;  // background layout, default trajectory and noise
 };
 
