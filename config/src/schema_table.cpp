@@ -165,6 +165,10 @@ const std::vector<Key>& schema() {
             "a target is still when less than this share of the movement is around it",
             [](auto& c) -> auto& { return c.core.tracking.abandon_share; }),
         real_key(
+            "tracking", "abandon_grace", 0.0, 60.0,
+            "never drop a target as still that had its share of the movement this recently",
+            [](auto& c) -> auto& { return c.core.tracking.abandon_grace; }),
+        real_key(
             "tracking", "extremity_motion", 0.0, 1.0,
             "a region's far end is the target when this share of the movement is around it",
             [](auto& c) -> auto& { return c.core.tracking.extremity_motion; }),

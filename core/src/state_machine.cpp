@@ -116,6 +116,7 @@ bool StateMachine::on_searching() noexcept {
     evidence_->forget_target();
     reference_color_ = evidence_->current_color(*found);
     still_since_.reset();
+    owned_motion_at_.reset();
     state_ = TrackerState::tracking;
     return true;
 }
@@ -229,6 +230,8 @@ bool StateMachine::still_too_long() const noexcept {
 
 // A search threshold's worth of movement, hardly any of it on the target: the target is a still
 // part of the scene the tracker locked on (a body, a sleeve, a shelf), and the hand is elsewhere.
+// Not a target that had its share of the movement within abandon_grace: that is a hand slowing
+// at the turn of a wave while something else moves (a ball or a person passing behind it).
 bool StateMachine::moving_elsewhere(const Estimate& estimate) noexcept {
     const double movement = evidence_->movement();
     if (settings_.abandon_seconds <= 0.0 || movement <= search_threshold_) {
@@ -238,9 +241,12 @@ bool StateMachine::moving_elsewhere(const Estimate& estimate) noexcept {
     if (evidence_->movement_near(estimate.centroid, motion_radius(estimate.area)) >=
         settings_.abandon_share * movement) {
         elsewhere_since_.reset();
+        owned_motion_at_ = now_;
         return false;
     }
     if (!elsewhere_since_) elsewhere_since_ = now_;
+    if (owned_motion_at_ && now_ - *owned_motion_at_ < seconds_to_us(settings_.abandon_grace))
+        return false;
     return now_ - *elsewhere_since_ >= seconds_to_us(settings_.abandon_seconds);
 }
 
@@ -249,6 +255,7 @@ void StateMachine::drop_target(LossReason reason) noexcept {
     result_.loss = reason;
     still_since_.reset();
     elsewhere_since_.reset();
+    owned_motion_at_.reset();
     result_.has_target = false;
     result_.lost = true;
     estimated_ = false;

@@ -172,6 +172,34 @@ TEST(StateMachine, TargetIsDroppedWhenTheMovementStaysElsewhere) {
     // clang-format on
 }
 
+TEST(StateMachine, TargetThatMovedWithinTheGraceIsNotAbandoned) {
+    // abandon_grace 0.5 s: the target had its share at 0.2 s, the movement is away from it from
+    // 0.3 s; abandon_seconds (0.3) is over at 0.6 s, but the target is kept until 0.5 s after
+    // its share, and dropped at 0.7 s. A target picked anew has no share yet: dropped once its
+    // 0.3 s away are over.
+    TrackingSettings s = paper(2.0, true);
+    s.abandon_seconds = 0.3;
+    s.abandon_grace = 0.5;
+    StateMachine machine(s, paper_size);
+    // clang-format off
+    play(machine, {
+        {0.0,  0,     none, {},             {skin, {}}, St::searching},
+        {0.1,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+        {0.2,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 6000},   // its share
+        {0.3,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},   // away from here
+        {0.4,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {0.5,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {0.6,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},   // 0.3 s away
+        {0.7,  60000, none, {est(P, 1000)}, {skin, {}}, St::searching, Ev::elsewhere, 5000},
+        {0.8,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+        {0.9,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},   // away from here
+        {1.0,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {1.1,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {1.2,  60000, none, {est(P, 1000)}, {skin, {}}, St::searching, Ev::elsewhere, 5000},
+    });
+    // clang-format on
+}
+
 TEST(StateMachine, TargetIsNeverAbandonedInThePaperPreset) {
     StateMachine machine(paper(2.0, false), paper_size);
     std::vector<Row> rows{{0.0, 0, none, {}, {skin, {}}, St::searching},

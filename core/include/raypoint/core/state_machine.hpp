@@ -92,6 +92,9 @@ class StateMachine {
     TrackerState state_ = TrackerState::initializing;
     std::optional<Timestamp> started_at_;
     std::optional<Timestamp> still_since_;
+    // The last frame whose movement was over the search threshold with the target's share of
+    // it around the target (TrackingSettings::abandon_grace).
+    std::optional<Timestamp> owned_motion_at_;
     std::optional<Timestamp> elsewhere_since_;  // the target still, the scene's motion not
     cv::Point2f inner_;                         // the inner point after the previous frame
     Estimate candidate_;                        // TRACKING's estimate, waiting for VALIDATING
