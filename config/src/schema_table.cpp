@@ -169,6 +169,14 @@ const std::vector<Key>& schema() {
             "never drop a target as still that had its share of the movement this recently",
             [](auto& c) -> auto& { return c.core.tracking.abandon_grace; }),
         real_key(
+            "tracking", "max_growth", 0.0, 100.0,
+            "hold back an estimate whose area grows more than this factor in 1/30 s (0: never)",
+            [](auto& c) -> auto& { return c.core.tracking.max_growth; }),
+        real_key(
+            "tracking", "growth_hold", 0.0, 10.0,
+            "seconds at most that an estimate grown too fast is held back",
+            [](auto& c) -> auto& { return c.core.tracking.growth_hold; }),
+        real_key(
             "tracking", "extremity_motion", 0.0, 1.0,
             "a region's far end is the target when this share of the movement is around it",
             [](auto& c) -> auto& { return c.core.tracking.extremity_motion; }),

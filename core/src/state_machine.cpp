@@ -147,8 +147,33 @@ bool StateMachine::on_tracking() noexcept {
         drop_target(reason);
         return true;
     }
+    if (held_back()) return true;
     state_ = TrackerState::validating;
     return false;
+}
+
+// A hand's projection cannot double in 1/30 s: that is its region merging with something of its
+// colour behind it (a body, a ball passing, a shelf through a gap in the outline). The last
+// accepted estimate stands, for at most growth_hold: a region that stays that large is taken.
+// The limit compounds over the time since that estimate (x8 over 0.1 s at 10 fps), so a quick
+// push at a low frame rate is not held.
+bool StateMachine::held_back() noexcept {
+    if (settings_.max_growth <= 0.0 || !estimated_) return false;
+    const double frames = std::max(1.0, static_cast<double>(now_ - last_accepted_at_) * 30e-6);
+    if (candidate_.area <= std::pow(settings_.max_growth, frames) * last_accepted_.area) {
+        held_since_.reset();
+        return false;
+    }
+    if (!held_since_) held_since_ = now_;
+    if (now_ - *held_since_ >= seconds_to_us(settings_.growth_hold)) {
+        held_since_.reset();
+        return false;
+    }
+    result_.estimate = last_accepted_;
+    result_.has_target = true;
+    result_.area_known = true;
+    result_.held = true;
+    return true;
 }
 
 // The previous inner point in the previous frame against the new one in this frame.
@@ -256,6 +281,7 @@ void StateMachine::drop_target(LossReason reason) noexcept {
     still_since_.reset();
     elsewhere_since_.reset();
     owned_motion_at_.reset();
+    held_since_.reset();
     result_.has_target = false;
     result_.lost = true;
     estimated_ = false;
@@ -263,6 +289,8 @@ void StateMachine::drop_target(LossReason reason) noexcept {
 }
 
 void StateMachine::accept(const Estimate& estimate) noexcept {
+    last_accepted_ = estimate;
+    last_accepted_at_ = now_;
     inner_ = estimate.inner;
     estimated_ = true;
     result_.estimate = estimate;

@@ -76,6 +76,7 @@ FrameResult Tracker::process(const FrameView& frame) noexcept {
     result.movement = d.preprocessor.movement();
     result.iterations = step.iterations;
     result.recovered = step.recovered;
+    result.held = step.held;
     result.lost = step.lost;
     result.loss = step.loss;
     // Working pixel centres are at integer coordinates; fractions are of the whole frame.

@@ -112,12 +112,13 @@ int track_command(std::span<const std::string_view> args) {
                 if (change.button == core::Button::left) log.clicks.push_back({t, change.pressed});
             }
         }
-        if (options.verbose && (result.lost || result.recovered)) {
+        if (options.verbose && (result.lost || result.recovered || result.held)) {
+            const std::string what = result.lost
+                                         ? "lost: " + std::string(core::to_string(result.loss))
+                                     : result.recovered ? std::string("recovered")
+                                                        : std::string("held: grew too fast");
             std::fprintf(stderr, "frame %lld t=%.3f: %s\n", static_cast<long long>(result.frame),
-                         static_cast<double>(result.timestamp) * 1e-6,
-                         result.lost
-                             ? ("lost: " + std::string(core::to_string(result.loss))).c_str()
-                             : "recovered");
+                         static_cast<double>(result.timestamp) * 1e-6, what.c_str());
         }
         if (!options.annotate.empty()) {
             if (!annotated) {

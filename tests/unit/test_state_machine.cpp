@@ -200,6 +200,46 @@ TEST(StateMachine, TargetThatMovedWithinTheGraceIsNotAbandoned) {
     // clang-format on
 }
 
+TEST(StateMachine, EstimateThatGrewTooFastIsHeldBack) {
+    // max_growth 2 at 30 fps: a candidate over twice the last accepted area a frame after it is
+    // held back (the last estimate stands, nothing is validated); the limit compounds with the
+    // frames since that estimate (4 times after two), and growth_hold (0.05 s) ends a hold
+    // whatever the limit. 12,000 square pixels is over max_area (11,520): dropped as before.
+    TrackingSettings s = paper(2.0, true);
+    s.min_area = 0.01;
+    s.max_growth = 2.0;
+    s.growth_hold = 0.05;
+    StateMachine machine(s, paper_size);
+    const cv::Point2f Q(70.0F, 50.0F);
+    constexpr double f = 1.0 / 30.0;
+    // clang-format off
+    const test::Played played = play(machine, {
+        {0.0,     0,     none, {},              {skin, {}}, St::searching},
+        {1 * f,   60000, P,    {},              {skin, {}}, St::tracking,  Ev::acquired},
+        {2 * f,   60000, none, {est(P, 1000)},  {skin, {}}, St::tracking},
+        {3 * f,   60000, none, {est(Q, 11000)}, {skin, {}}, St::tracking},   // held: over 2,000
+        {4 * f,   60000, none, {est(Q, 11000)}, {skin, {}}, St::tracking},   // held: over 4,000
+        {5 * f,   60000, none, {est(Q, 11000)}, {skin, {}}, St::tracking},   // 0.067 s: taken
+        {6 * f,   60000, none, {est(Q, 2500)},  {skin, {}}, St::tracking},   // smaller: taken
+        {7 * f,   60000, none, {est(Q, 4750)},  {skin, {}}, St::tracking},   // under 5,000
+        {8 * f,   60000, none, {est(Q, 9600)},  {skin, {}}, St::tracking},   // held: over 9,500
+        {9 * f,   60000, none, {est(Q, 9600)},  {skin, {}}, St::tracking},   // under 19,000
+        {10 * f,  60000, none, {est(Q, 12000)}, {skin, {}}, St::searching, Ev::too_large},
+    });
+    // clang-format on
+    const std::vector<double> areas{1000, 1000, 1000, 11000, 2500, 4750, 4750, 9600};
+    const std::vector<bool> held{false, true, true, false, false, false, true, false};
+    for (std::size_t i = 0; i < areas.size(); ++i) {
+        const core::StepResult& r = played.results[i + 2];
+        EXPECT_TRUE(r.has_target) << "frame " << i + 2;
+        EXPECT_EQ(r.estimate.area, areas[i]) << "frame " << i + 2;
+        EXPECT_EQ(r.held, held[i]) << "frame " << i + 2;
+    }
+    // A held frame estimates once, from the last accepted inner point, and validates nothing.
+    EXPECT_EQ(played.estimated_at[4], std::vector<cv::Point2f>{P});
+    EXPECT_TRUE(played.painted_at[4].empty());
+}
+
 TEST(StateMachine, TargetIsNeverAbandonedInThePaperPreset) {
     StateMachine machine(paper(2.0, false), paper_size);
     std::vector<Row> rows{{0.0, 0, none, {}, {skin, {}}, St::searching},

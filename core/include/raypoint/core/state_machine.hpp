@@ -49,6 +49,7 @@ struct StepResult {
     Estimate estimate;        // valid when has_target; working pixels
     bool acquired = false;    // SEARCHING picked a new target this frame
     bool recovered = false;   // RECOVERING succeeded this frame
+    bool held = false;        // TRACKING held a candidate that grew too fast (max_growth) back
     bool lost = false;        // the target was dropped this frame
     LossReason loss = LossReason::none;
     int iterations = 0;
@@ -80,6 +81,8 @@ class StateMachine {
     bool still_too_long() const noexcept;
     // Whether the movement has been away from the target for abandon_seconds.
     bool moving_elsewhere(const Estimate& estimate) noexcept;
+    // Whether the candidate grew past max_growth and is held back (the last estimate reported).
+    bool held_back() noexcept;
     void drop_target(LossReason reason) noexcept;
     void accept(const Estimate& estimate) noexcept;
 
@@ -95,6 +98,11 @@ class StateMachine {
     // The last frame whose movement was over the search threshold with the target's share of
     // it around the target (TrackingSettings::abandon_grace).
     std::optional<Timestamp> owned_motion_at_;
+    // TrackingSettings::max_growth: the last accepted estimate, when, and since when estimates
+    // that grew too fast have been held back.
+    Estimate last_accepted_{};
+    Timestamp last_accepted_at_ = 0;
+    std::optional<Timestamp> held_since_;
     std::optional<Timestamp> elsewhere_since_;  // the target still, the scene's motion not
     cv::Point2f inner_;                         // the inner point after the previous frame
     Estimate candidate_;                        // TRACKING's estimate, waiting for VALIDATING

@@ -33,6 +33,7 @@ struct FrameResult {
     double movement = 0.0;   // global inter-frame movement: sum of the compensated difference
     int iterations = 0;      // estimator iterations spent on this frame
     bool recovered = false;  // RECOVERING ran this frame and succeeded
+    bool held = false;       // the estimate grew too fast: the last one stands (max_growth)
     bool lost = false;       // the target was dropped this frame
     LossReason loss = LossReason::none;
     // Fractions: the failed inner point RECOVERING searched around this frame (for drawing).
