@@ -2,7 +2,9 @@
 #include "passer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <span>
 
 namespace raypoint::scene {
 namespace {
@@ -34,10 +36,12 @@ void Passer::draw(double t, double exposure, const cv::Mat& vignette, cv::Mat& l
         const double x0 = dir < 0 ? frame_.width + radius_ : -radius_;
         const int subs = std::clamp(
             static_cast<int>(std::ceil(speed * exposure / blur_step_px)) + 1, 1, max_sub_frames);
-        std::vector<double> xs;
+        std::array<double, max_sub_frames> positions{};
+        const auto xs = std::span<const double>(positions.data(), static_cast<std::size_t>(subs));
         for (int k = 0; k < subs; ++k) {
             const double when = subs == 1 ? u : u - exposure / 2 + exposure * (k + 0.5) / subs;
-            xs.push_back(x0 + dir * speed * std::clamp(when, 0.0, seconds_));
+            positions[static_cast<std::size_t>(k)] =
+                x0 + dir * speed * std::clamp(when, 0.0, seconds_);
         }
         const double lo = *std::min_element(xs.begin(), xs.end()) - radius_ - 1;
         const double hi = *std::max_element(xs.begin(), xs.end()) + radius_ + 1;

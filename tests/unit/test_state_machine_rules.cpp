@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: MIT
+// The state machine's rules that are not the paper's, as transcripts: letting go of a still
+// target while the movement is elsewhere (abandon_seconds, abandon_grace) and holding back an
+// estimate that grew too fast (max_growth). Working image 160x120 (state_machine_testing.hpp).
+
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "state_machine_testing.hpp"
+
+namespace raypoint::core {
+namespace {
+
+using test::play;
+using test::Row;
+using Ev = test::Event;
+using St = TrackerState;
+using namespace test::machine;
+
+TEST(StateMachine, TargetIsDroppedWhenTheMovementStaysElsewhere) {
+    // abandon_seconds 0.3 at 10 fps, share 0.1: from 0.3 s, 60,000 of movement with 5,000 of it
+    // around the target. A frame at the share (6,000, not below) or with the whole under the
+    // search threshold restarts the clock; the fourth frame away, at 0.3 s, drops the target
+    // after estimating (the estimate says where the target is).
+    TrackingSettings s = paper(2.0, true);
+    s.abandon_seconds = 0.3;
+    StateMachine machine(s, paper_size);
+    // clang-format off
+    play(machine, {
+        {0.0,  0,     none, {},             {skin, {}}, St::searching},
+        {0.1,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+        {0.2,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 6000},   // at the share
+        {0.3,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},   // away from here
+        {0.4,  57600, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 0},      // not over: reset
+        {0.5,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},   // away from here
+        {0.6,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {0.7,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {0.8,  60000, none, {est(P, 1000)}, {skin, {}}, St::searching, Ev::elsewhere, 5000},
+        {0.9,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+    });
+    // clang-format on
+}
+
+TEST(StateMachine, TargetThatMovedWithinTheGraceIsNotAbandoned) {
+    // abandon_grace 0.5 s: the target had its share at 0.2 s, the movement is away from it from
+    // 0.3 s; abandon_seconds (0.3) is over at 0.6 s, but the target is kept until 0.5 s after
+    // its share, and dropped at 0.7 s. A target picked anew has no share yet: dropped once its
+    // 0.3 s away are over.
+    TrackingSettings s = paper(2.0, true);
+    s.abandon_seconds = 0.3;
+    s.abandon_grace = 0.5;
+    StateMachine machine(s, paper_size);
+    // clang-format off
+    play(machine, {
+        {0.0,  0,     none, {},             {skin, {}}, St::searching},
+        {0.1,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+        {0.2,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 6000},   // its share
+        {0.3,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},   // away from here
+        {0.4,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {0.5,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {0.6,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},   // 0.3 s away
+        {0.7,  60000, none, {est(P, 1000)}, {skin, {}}, St::searching, Ev::elsewhere, 5000},
+        {0.8,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+        {0.9,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},   // away from here
+        {1.0,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {1.1,  60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, 5000},
+        {1.2,  60000, none, {est(P, 1000)}, {skin, {}}, St::searching, Ev::elsewhere, 5000},
+    });
+    // clang-format on
+}
+
+TEST(StateMachine, EstimateThatGrewTooFastIsHeldBack) {
+    // max_growth 2 at 30 fps: a candidate over twice the last accepted area a frame after it is
+    // held back (the last estimate stands, nothing is validated); the limit compounds with the
+    // frames since that estimate (4 times after two), and growth_hold (0.05 s) ends a hold
+    // whatever the limit. 12,000 square pixels is over max_area (11,520): dropped as before.
+    TrackingSettings s = paper(2.0, true);
+    s.min_area = 0.01;
+    s.max_growth = 2.0;
+    s.growth_hold = 0.05;
+    StateMachine machine(s, paper_size);
+    const cv::Point2f Q(70.0F, 50.0F);
+    constexpr double f = 1.0 / 30.0;
+    // clang-format off
+    const test::Played played = play(machine, {
+        {0.0,     0,     none, {},              {skin, {}}, St::searching},
+        {1 * f,   60000, P,    {},              {skin, {}}, St::tracking,  Ev::acquired},
+        {2 * f,   60000, none, {est(P, 1000)},  {skin, {}}, St::tracking},
+        {3 * f,   60000, none, {est(Q, 11000)}, {skin, {}}, St::tracking},   // held: over 2,000
+        {4 * f,   60000, none, {est(Q, 11000)}, {skin, {}}, St::tracking},   // held: over 4,000
+        {5 * f,   60000, none, {est(Q, 11000)}, {skin, {}}, St::tracking},   // 0.067 s: taken
+        {6 * f,   60000, none, {est(Q, 2500)},  {skin, {}}, St::tracking},   // smaller: taken
+        {7 * f,   60000, none, {est(Q, 4750)},  {skin, {}}, St::tracking},   // under 5,000
+        {8 * f,   60000, none, {est(Q, 9600)},  {skin, {}}, St::tracking},   // held: over 9,500
+        {9 * f,   60000, none, {est(Q, 9600)},  {skin, {}}, St::tracking},   // under 19,000
+        {10 * f,  60000, none, {est(Q, 12000)}, {skin, {}}, St::searching, Ev::too_large},
+    });
+    // clang-format on
+    const std::vector<double> areas{1000, 1000, 1000, 11000, 2500, 4750, 4750, 9600};
+    const std::vector<bool> held{false, true, true, false, false, false, true, false};
+    for (std::size_t i = 0; i < areas.size(); ++i) {
+        const core::StepResult& r = played.results[i + 2];
+        EXPECT_TRUE(r.has_target) << "frame " << i + 2;
+        EXPECT_EQ(r.estimate.area, areas[i]) << "frame " << i + 2;
+        EXPECT_EQ(r.held, held[i]) << "frame " << i + 2;
+    }
+    // A held frame estimates once, from the last accepted inner point, and validates nothing.
+    EXPECT_EQ(played.estimated_at[4], std::vector<cv::Point2f>{P});
+    EXPECT_TRUE(played.painted_at[4].empty());
+}
+
+TEST(StateMachine, TargetIsNeverAbandonedInThePaperPreset) {
+    StateMachine machine(paper(2.0, false), paper_size);
+    std::vector<Row> rows{{0.0, 0, none, {}, {skin, {}}, St::searching},
+                          {0.1, 60000, P, {}, {skin, {}}, St::tracking, Ev::acquired}};
+    for (int i = 2; i < 20; ++i) {
+        rows.push_back(
+            {i / 10.0, 60000, none, {est(P, 1000)}, {skin, {}}, St::tracking, Ev::none, 0.0});
+    }
+    play(machine, rows);
+}
+
+}  // namespace
+}  // namespace raypoint::core
