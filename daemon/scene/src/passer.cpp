@@ -6,13 +6,9 @@
 #include <cmath>
 #include <span>
 
+#include "motion_blur.hpp"
+
 namespace raypoint::scene {
-namespace {
-
-constexpr double blur_step_px = 2.0;  // sub-positions of the blur: the target's spacing
-constexpr int max_sub_frames = 12;
-
-}  // namespace
 
 Passer::Passer(cv::Size frame, const SceneSpec& spec)
     : frame_(frame),
@@ -34,8 +30,7 @@ void Passer::draw(double t, double exposure, const cv::Mat& vignette, cv::Mat& l
         if (u < -exposure || u > seconds_ + exposure) continue;
         const double dir = i % 2 == 0 ? -1.0 : 1.0;
         const double x0 = dir < 0 ? frame_.width + radius_ : -radius_;
-        const int subs = std::clamp(
-            static_cast<int>(std::ceil(speed * exposure / blur_step_px)) + 1, 1, max_sub_frames);
+        const int subs = sub_frame_count(speed * exposure);
         std::array<double, max_sub_frames> positions{};
         const auto xs = std::span<const double>(positions.data(), static_cast<std::size_t>(subs));
         for (int k = 0; k < subs; ++k) {

@@ -13,6 +13,7 @@
 #include "background.hpp"
 #include "camera.hpp"
 #include "measure.hpp"
+#include "motion_blur.hpp"
 #include "passer.hpp"
 #include "person.hpp"
 #include "photometry.hpp"
@@ -71,10 +72,8 @@ struct Renderer::Assets {
 
 namespace {
 
-constexpr double blur_step_px = 2.0;  // sub-frame spacing: larger steps show as ghost edges
 // Rolling shutter: rows read at one time. 4 rows at 480 are 0.2 ms of a 25 ms readout.
 constexpr int rolling_band_rows = 4;
-constexpr int max_sub_frames = 12;
 constexpr int sensor_band_rows = 16;
 
 void check(bool ok, const std::string& what) {
@@ -145,8 +144,7 @@ SubFrames exposure_placements(const Renderer::Assets& a, const SceneSpec& spec, 
         const auto first = place(a, spec, t - exposure / 2);
         const auto last = place(a, spec, t + exposure / 2);
         if (first && last) {
-            const double steps = std::ceil(travel_px(*first, *last) / blur_step_px);
-            count = std::clamp(static_cast<int>(steps) + 1, 1, max_sub_frames);
+            count = sub_frame_count(travel_px(*first, *last));
         }
     }
     SubFrames subs;
