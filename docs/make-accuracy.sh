@@ -2,13 +2,13 @@
 # SPDX-License-Identifier: MIT
 # Regenerates the table of docs/accuracy.md: raypoint's `track` beside OpenCV's CamShift and CSRT,
 # scored by a scorer that reads scene folders (video.mp4, truth.jsonl, masks.npz; docs/scoring.md),
-# on the clips given plus eleven presets rendered with four other seeds (7, 11, 13, 17), so that a default
+# on the clips given plus twelve presets rendered with four other seeds (7, 11, 13, 17), so that a default
 # tuned on one rendering shows when it fails another of the same kind.
 #   docs/make-accuracy.sh BUILD_DIR SCORER.py CLIP_DIR...
 set -euo pipefail
 build=$(realpath "$1"); scorer=$2; shift 2
 renders=$(mktemp -d); trap 'rm -rf "$renders"' EXIT
-for preset in realworld hd60 pause interfering nonconvex fast flicker person skinwall desk sleeve; do
+for preset in realworld hd60 pause interfering nonconvex fast flicker person skinwall desk sleeve passer; do
   for seed in 7 11 13 17; do
     "$build/tests/scene/raypoint-render-scene" --preset "$preset" --seed "$seed" \
       --out "$renders/${preset}_$seed" >/dev/null
