@@ -176,6 +176,14 @@ const std::vector<Key>& schema() {
             "tracking", "growth_hold", 0.0, 10.0,
             "seconds at most that an estimate grown too fast is held back",
             [](auto& c) -> auto& { return c.core.tracking.growth_hold; }),
+        integer_key(
+            "tracking", "repick_difference", 0, 255,
+            "a fresh pick whose patch differs this much on average follows the movement (0: never)",
+            [](auto& c) -> auto& { return c.core.tracking.repick_difference; }),
+        real_key(
+            "tracking", "repick_seconds", 0.0, 10.0,
+            "seconds after a pick that it may follow the movement before it is estimated",
+            [](auto& c) -> auto& { return c.core.tracking.repick_seconds; }),
         real_key(
             "tracking", "extremity_motion", 0.0, 1.0,
             "a region's far end is the target when this share of the movement is around it",

@@ -109,14 +109,11 @@ bool StateMachine::on_searching() noexcept {
     if (evidence_->movement() <= search_threshold_) return true;
     const auto found = evidence_->detect();
     if (!found) return true;
-    inner_ = *found;
-    result_.estimate = Estimate{*found, 0.0, *found, 0};
-    result_.has_target = true;
-    result_.acquired = true;
     evidence_->forget_target();
-    reference_color_ = evidence_->current_color(*found);
+    pick(*found);
     still_since_.reset();
     owned_motion_at_.reset();
+    picked_at_ = now_;
     state_ = TrackerState::tracking;
     return true;
 }
@@ -131,6 +128,7 @@ bool StateMachine::on_tracking() noexcept {
         drop_target(LossReason::still);
         return true;
     }
+    if (pick_moved_on()) return true;
     candidate_ = evidence_->estimate(inner_);
     result_.iterations += candidate_.iterations;
     if (moving_elsewhere(candidate_)) {
@@ -240,6 +238,39 @@ bool StateMachine::on_recovering() noexcept {
     accept(recovered);
     state_ = TrackerState::tracking;
     return true;
+}
+
+// The pick is the centre of mass of the difference (paper 4.2). A target entering fast at a low
+// frame rate has moved on by the next frame: the pick lies on the background it uncovered, which
+// the difference shows (repick_difference grey levels or more a pixel of the colour patch), and an
+// estimate from there is the wall or the floor, kept once the hand stops. The pick follows the
+// movement instead, with the estimate from the next frame (validation compares two frames), for
+// at most repick_seconds after the first pick: a target that never slows is estimated anyway.
+bool StateMachine::pick_moved_on() noexcept {
+    if (settings_.repick_difference <= 0 || estimated_ ||
+        now_ - picked_at_ > seconds_to_us(settings_.repick_seconds) ||
+        evidence_->movement() <= search_threshold_) {
+        return false;
+    }
+    const int half = settings_.color_patch / 2;
+    const double side = 2.0 * half + 1.0;
+    if (evidence_->movement_near(inner_, static_cast<float>(half)) <
+        settings_.repick_difference * side * side) {
+        return false;
+    }
+    const auto found = evidence_->detect();
+    if (!found) return false;
+    pick(*found);
+    return true;
+}
+
+// The inner point and the centroid at `at`, with no area this frame.
+void StateMachine::pick(cv::Point2f at) noexcept {
+    inner_ = at;
+    result_.estimate = Estimate{at, 0.0, at, 0};
+    result_.has_target = true;
+    result_.acquired = true;
+    reference_color_ = evidence_->current_color(at);
 }
 
 LossReason StateMachine::area_check(double area) const noexcept {

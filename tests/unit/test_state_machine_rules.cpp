@@ -110,6 +110,52 @@ TEST(StateMachine, EstimateThatGrewTooFastIsHeldBack) {
     EXPECT_TRUE(played.painted_at[4].empty());
 }
 
+TEST(StateMachine, PickFollowsATargetThatMovedOnBeforeItsFirstEstimate) {
+    // repick_difference 10 over the 5x5 colour patch (250 of movement around the pick), for
+    // repick_seconds 0.3 after the first pick, at 10 fps: the pick at 0.1 s is uncovered
+    // background at 0.2 s (300 around it), so the difference's centre of mass in that frame, Q,
+    // is the pick, with no estimate. At 0.3 s the movement around Q is under the level (200):
+    // Q is estimated, and after a first estimate no pick follows (0.4 s).
+    TrackingSettings s = paper(2.0, true);
+    s.repick_difference = 10;
+    s.repick_seconds = 0.3;
+    StateMachine machine(s, paper_size);
+    const cv::Point2f Q(40.0F, 52.0F);
+    const cv::Point2f R(30.0F, 54.0F);
+    // clang-format off
+    const test::Played played = play(machine, {
+        {0.0,  0,     none, {},             {skin, {}}, St::searching},
+        {0.1,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+        {0.2,  60000, Q,    {},             {skin, {}}, St::tracking,  Ev::acquired, 300},
+        {0.3,  60000, R,    {est(Q, 1000)}, {skin, {}}, St::tracking,  Ev::none, 200},
+        {0.4,  60000, R,    {est(Q, 1000)}, {skin, {}}, St::tracking,  Ev::none, 300},
+    });
+    // clang-format on
+    EXPECT_EQ(played.results[2].estimate.centroid, Q);
+    EXPECT_TRUE(played.estimated_at[2].empty());
+    EXPECT_EQ(played.estimated_at[3], std::vector<cv::Point2f>{Q});
+}
+
+TEST(StateMachine, PickFollowsTheMovementForRepickSecondsAtMost) {
+    // A pick whose patch stays in the movement follows it while 0.3 s have not passed since
+    // the first pick (0.9-1.2 s, the bound included); at 1.3 s it is estimated where it is.
+    TrackingSettings s = paper(2.0, true);
+    s.repick_difference = 10;
+    s.repick_seconds = 0.3;
+    StateMachine machine(s, paper_size);
+    const cv::Point2f Q(40.0F, 52.0F);
+    // clang-format off
+    play(machine, {
+        {0.0,  0,     none, {},             {skin, {}}, St::searching},
+        {0.9,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+        {1.0,  60000, Q,    {},             {skin, {}}, St::tracking,  Ev::acquired, 300},
+        {1.1,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired, 300},
+        {1.2,  60000, Q,    {},             {skin, {}}, St::tracking,  Ev::acquired, 300},
+        {1.3,  60000, P,    {est(Q, 1000)}, {skin, {}}, St::tracking,  Ev::none, 300},
+    });
+    // clang-format on
+}
+
 TEST(StateMachine, TargetIsNeverAbandonedInThePaperPreset) {
     StateMachine machine(paper(2.0, false), paper_size);
     std::vector<Row> rows{{0.0, 0, none, {}, {skin, {}}, St::searching},

@@ -47,7 +47,7 @@ struct StepResult {
     bool has_target = false;
     bool area_known = false;  // false on the frame a search picks a target (paper 4.2)
     Estimate estimate;        // valid when has_target; working pixels
-    bool acquired = false;    // SEARCHING picked a new target this frame
+    bool acquired = false;    // a target was picked this frame (SEARCHING, or repick_difference)
     bool recovered = false;   // RECOVERING succeeded this frame
     bool held = false;        // TRACKING held a candidate that grew too fast (max_growth) back
     bool lost = false;        // the target was dropped this frame
@@ -83,6 +83,9 @@ class StateMachine {
     bool moving_elsewhere(const Estimate& estimate) noexcept;
     // Whether the candidate grew past max_growth and is held back (the last estimate reported).
     bool held_back() noexcept;
+    // Whether the target moved on from a pick not yet estimated; the pick then follows it.
+    bool pick_moved_on() noexcept;
+    void pick(cv::Point2f at) noexcept;
     void drop_target(LossReason reason) noexcept;
     void accept(const Estimate& estimate) noexcept;
 
@@ -103,6 +106,7 @@ class StateMachine {
     Estimate last_accepted_{};
     Timestamp last_accepted_at_ = 0;
     std::optional<Timestamp> held_since_;
+    Timestamp picked_at_ = 0;                   // when SEARCHING picked the target
     std::optional<Timestamp> elsewhere_since_;  // the target still, the scene's motion not
     cv::Point2f inner_;                         // the inner point after the previous frame
     Estimate candidate_;                        // TRACKING's estimate, waiting for VALIDATING
