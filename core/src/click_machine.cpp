@@ -43,7 +43,7 @@ bool ClickMachine::release_all() noexcept {
 }
 
 ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, bool ready,
-                             cv::Point2d where, bool late) noexcept {
+                             cv::Point2d where, bool late, double raw) noexcept {
     now_ = timestamp;
     where_ = where;
     late_ = late;
@@ -56,10 +56,12 @@ ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, b
     if (!scale || !(*scale > 0.0)) {
         baseline_ = 0.0;
         rise_ = 0.0;
+        last_raw_ = 0.0;
         result_.state = state_;
         return result_;
     }
     scale_ = *scale;
+    raw_ = raw > 0.0 ? raw : scale_;
     ready_ = ready;
     // Against the baseline before this frame: a frame never dilutes its own rise.
     rise_ = baseline_ > 0.0 ? scale_ / baseline_ - 1.0 : 0.0;
@@ -97,6 +99,7 @@ ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, b
     }
     last_frame_ = now_;
     last_where_ = where_;
+    last_raw_ = raw_;
     result_.state = state_;
     return result_;
 }
@@ -176,7 +179,17 @@ bool ClickMachine::pulled_back() noexcept {
     peak_ = std::max(peak_, scale_);
     const bool dropped =
         settings_.release_drop > 0.0 && scale_ <= peak_ * (1.0 - settings_.release_drop);
-    return held(rise_ <= settings_.release_rise || dropped);
+    // The target's own size back near where the push began is a pull-back even where the depth
+    // signal took the pull-back's last step out as the region changing: at 10 fps, or with a
+    // region that changes shape as the hand comes back, that step is 15-25% in one frame with
+    // the centroid jumping, and the signal then stays up. The signal must have come back by
+    // half of release_drop too: a region that flickers to a smaller shape while the push is
+    // held drops the raw size alone. Only the depth signal's steps part raw and signal, so
+    // without them (glitch_jump 0) the rule is off.
+    const bool back = settings_.glitch_jump > 0.0 && push_raw_ > 0.0 &&
+                      raw_ <= push_raw_ * (1.0 + settings_.release_rise) &&
+                      scale_ <= peak_ * (1.0 - settings_.release_drop / 2.0);
+    return held(rise_ <= settings_.release_rise || dropped || back);
 }
 
 void ClickMachine::on_inactive() noexcept {
@@ -191,6 +204,7 @@ void ClickMachine::on_idle() noexcept {
     if (rise_ > settings_.start_rise) {
         push_began_ = last_frame_;
         push_from_ = last_where_;
+        push_raw_ = last_raw_;
         push_peak_ = 0.0;
         held_since_.reset();
         state_ = ClickState::rising;

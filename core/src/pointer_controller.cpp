@@ -69,10 +69,12 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
         case ClickMode::depth: {
             // Frame widths on both axes, as the hold radius is.
             const cv::Point2d where(position.x, position.y / frame_aspect_);
-            const std::optional<double> scale = depth_.update(
-                has_target ? std::optional<double>(std::sqrt(*frame.area)) : std::nullopt,
-                cv::Point2d(frame.centroid.x, frame.centroid.y / frame_aspect_), now);
-            const ClickStep step = clicker_.step(now, scale, ready, where, depth_.given_back());
+            const double raw = has_target ? std::sqrt(*frame.area) : 0.0;
+            const std::optional<double> scale =
+                depth_.update(has_target ? std::optional<double>(raw) : std::nullopt,
+                              cv::Point2d(frame.centroid.x, frame.centroid.y / frame_aspect_), now);
+            const ClickStep step =
+                clicker_.step(now, scale, ready, where, depth_.given_back(), raw);
             // x and y stay where the push began while a button is down or may yet be, and on
             // the frame a held push starts a drag, whose press goes where the push began.
             const bool hold = step.press || step.state == ClickState::pressed ||

@@ -306,5 +306,56 @@ TEST(ClickGestures, AOneFrameGlitchWhileHeldNeitherScrollsNorClicks) {
     // clang-format on
 }
 
+PointerSettings gestures_with_glitches() {
+    PointerSettings s = gestures();
+    s.click.glitch_jump = 0.1;
+    s.click.release_drop = 0.25;
+    s.click.hold_radius = 0.05;
+    return s;
+}
+
+// A push from 0.200 to 0.260 held still until the right click is armed.
+void hold_a_push(PointerController& pointer) {
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x      y      size    click            out
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.230,  "rising",        ""},
+        { 500,   T,       0.500, 0.500, 0.260,  "holding",       ""},
+        {1000,   T,       0.500, 0.500, 0.260,  "right_armed",   ""},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, APullBackWhoseLastStepIsTakenOutStillRightClicks) {
+    // The pull-back's last frame shrinks the region by 27% with its centroid 0.13 of the size
+    // away: the depth signal takes the step out as the region changing and stays at 0.225, a
+    // rise of 12.5%. The target's own size is back where the push began: the pull-back.
+    PointerController pointer(gestures_with_glitches(), aspect);
+    hold_a_push(pointer);
+    // clang-format off
+    play(pointer, {
+        {1100,   T,       0.500, 0.500, 0.225,  "right_armed",   ""},   // -13.5%
+        {1200,   T,       0.530, 0.500, 0.165,  "refractory",    "rel -30 0 +right -right"},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, ARegionFlickerAtTheTopOfAHeldPushDoesNotRelease) {
+    // The same small size for one frame with the push still at its peak: the region dropped a
+    // piece, the signal stays at the peak, and the right click waits for the pull-back.
+    PointerController pointer(gestures_with_glitches(), aspect);
+    hold_a_push(pointer);
+    // clang-format off
+    play(pointer, {
+        {1100,   T,       0.530, 0.500, 0.190,  "right_armed",   ""},   // -27%, taken out
+        {1200,   T,       0.500, 0.500, 0.260,  "right_armed",   ""},   // and given back
+        {1300,   T,       0.500, 0.500, 0.200,  "refractory",    "+right -right"},
+    });
+    // clang-format on
+}
+
 }  // namespace
 }  // namespace raypoint::core

@@ -66,8 +66,9 @@ class ClickMachine {
     // position in frame widths on both axes (y down), read by HOLDING and SCROLLING only.
     // late: the scale's change on this frame happened on the previous one (the depth signal
     // gave back a step it had held for a frame), so push_seconds counts to that frame.
+    // raw: sqrt(area) before the depth signal took steps out; 0: the same as scale.
     ClickStep step(Timestamp timestamp, std::optional<double> scale, bool ready,
-                   cv::Point2d where = {}, bool late = false) noexcept;
+                   cv::Point2d where = {}, bool late = false, double raw = 0.0) noexcept;
 
     // Pause, exit, signal: back to inactive. True when a button was down and must be released.
     bool release_all() noexcept;
@@ -109,6 +110,8 @@ class ClickMachine {
     Timestamp push_began_ = 0;
     cv::Point2d push_from_;  // where the push began: the position of the frame before RISING
     cv::Point2d last_where_;
+    double last_raw_ = 0.0;   // the previous frame's raw scale
+    double push_raw_ = 0.0;   // the raw scale on the frame before RISING
     double push_peak_ = 0.0;  // RISING: the largest scale since the push began
     Timestamp pressed_at_ = 0;
     Timestamp released_at_ = 0;
@@ -129,6 +132,7 @@ class ClickMachine {
     // The frame being stepped.
     Timestamp now_ = 0;
     double scale_ = 0.0;
+    double raw_ = 0.0;
     bool ready_ = false;
     bool late_ = false;
     cv::Point2d where_;
