@@ -6,9 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 #include <sstream>
+#include <string_view>
 
 #include "input_error.hpp"
 #include "raypoint/core/pointer_controller.hpp"
@@ -143,8 +145,48 @@ TrackedClip track_recorded(const std::string& video, const std::string& truth,
     return tracked;
 }
 
+namespace {
+
+void print_trace_header(std::FILE* out, std::string_view clip) {
+    std::fprintf(out,
+                 "# trace %.*s: time (s), sqrt(area) (- without one), centroid x y (fractions of "
+                 "the frame), the click machine's baseline and rise, the depth signal's step "
+                 "(absorbed, given back, -), the click state, the buttons and wheel out\n",
+                 static_cast<int>(clip.size()), clip.data());
+}
+
+// One frame of --trace: what the tracker gave, what the depth signal and the click machine made
+// of it, and what went out.
+void trace_frame(std::FILE* out, const core::FrameResult& result,
+                 const core::PointerController& pointer, const core::PointerCommand& command) {
+    const double t = static_cast<double>(result.timestamp) / 1e6;
+    if (result.area) {
+        std::fprintf(out, "%.3f %.4f %.3f %.3f", t, std::sqrt(*result.area), result.centroid.x,
+                     result.centroid.y);
+    } else {
+        std::fprintf(out, "%.3f - - -", t);
+    }
+    const core::DepthSignal& signal = pointer.depth_signal();
+    const core::ClickMachine& machine = pointer.click_machine();
+    const char* step = signal.absorbed() ? "absorbed" : signal.given_back() ? "given_back" : "-";
+    const std::string_view state = core::to_string(machine.state());
+    std::fprintf(out, " %.4f %+.3f %s %.*s", machine.baseline(), machine.rise(), step,
+                 static_cast<int>(state.size()), state.data());
+    for (const core::ButtonChange& change : command.button_changes()) {
+        const std::string_view button = core::to_string(change.button);
+        std::fprintf(out, " %c%.*s", change.pressed ? '+' : '-', static_cast<int>(button.size()),
+                     button.data());
+    }
+    if (command.wheel_hi_res != 0) std::fprintf(out, " wheel %d", command.wheel_hi_res);
+    std::fputc('\n', out);
+}
+
+}  // namespace
+
 void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, Tallies& tallies,
-                std::FILE* misses) {
+                std::FILE* misses, std::FILE* trace, std::string_view trace_clip) {
+    if (trace != nullptr && clip.name != trace_clip) trace = nullptr;
+    if (trace != nullptr) print_trace_header(trace, clip.name);
     core::PointerController pointer(settings, clip.aspect);
     std::vector<Press> presses;
     Outputs outputs;
@@ -185,6 +227,7 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, 
         times.push_back(t);
         cursors.push_back(cursor);
         rises.push_back(pointer.click_machine().rise());
+        if (trace != nullptr) trace_frame(trace, result, pointer, command);
         states.push_back(pointer.click_machine().state());
     }
     auto cursor_before = [&](double t) {

@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
@@ -40,6 +41,7 @@ struct EvalOptions {
     // of the click settings on the same tracking, in seconds.
     std::string cache_dir;
     bool misses = false;             // --misses: why each miss and false press happened, on stderr
+    std::string trace;               // --trace: each frame of the clip of that name, on stderr
     std::vector<std::string> clips;  // recorded: VIDEO, truth in VIDEO.clicks
     // --require: limits on the overall figures (the target pushes' recall); exit 1 when missed.
     std::optional<double> min_recall;      // fraction
@@ -106,6 +108,8 @@ EvalOptions parse_eval_options(std::span<const std::string_view> args) {
             options.max_confusion = parse_real(arg, option_value(args, i));
         } else if (arg == "--misses") {
             options.misses = true;
+        } else if (arg == "--trace") {
+            options.trace = std::string(option_value(args, i));
         } else if (arg == "--cache") {
             options.cache_dir = std::string(option_value(args, i));
         } else if (arg == "--write") {
@@ -228,10 +232,10 @@ std::vector<TrackedClip> track_all(const std::vector<scene::GestureClip>& set,
 }
 
 Tallies score_all(const std::vector<TrackedClip>& clips, const core::PointerSettings& settings,
-                  std::FILE* misses = nullptr) {
+                  std::FILE* misses = nullptr, std::string_view trace = {}) {
     Tallies tallies;
     for (const TrackedClip& clip : clips)
-        score_clip(clip, settings, tallies, misses);
+        score_clip(clip, settings, tallies, misses, trace.empty() ? nullptr : stderr, trace);
     return tallies;
 }
 
@@ -334,11 +338,21 @@ int eval_clicks_command(std::span<const std::string_view> args) {
         write_set(set, options.write_dir);
         return 0;
     }
+    // A recorded clip's name is its path, as given.
+    if (!options.trace.empty() &&
+        std::none_of(
+            set.begin(), set.end(),
+            [&](const scene::GestureClip& clip) { return clip.spec.name == options.trace; }) &&
+        std::find(options.clips.begin(), options.clips.end(), options.trace) ==
+            options.clips.end()) {
+        throw UsageError("--trace " + options.trace +
+                         ": no clip of that name (--misses names them, such as push-006)");
+    }
     const std::vector<TrackedClip> tracked = track_all(set, options, config.core);
     std::printf("# raypoint eval-clicks: gesture set '%s' (seed %u), %zu recorded clips\n\n",
                 options.set.c_str(), options.seed, options.clips.size());
     const Tallies tallies =
-        score_all(tracked, config.core.pointer, options.misses ? stderr : nullptr);
+        score_all(tracked, config.core.pointer, options.misses ? stderr : nullptr, options.trace);
     print_tallies(stdout, tallies);
     std::printf("\n");
     print_gestures(stdout, tallies);

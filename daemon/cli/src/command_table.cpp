@@ -87,6 +87,7 @@ constexpr std::array eval_clicks_options{
     OptionSpec{"--plot", "OUT.png", "the sweep, plotted"},
     OptionSpec{"--cache", "DIR", "keep the tracker's results of rendered clips there"},
     OptionSpec{"--misses", "", "say on stderr why each miss and false click happened"},
+    OptionSpec{"--trace", "CLIP", "each frame of the clip named CLIP on stderr"},
     OptionSpec{"--write", "DIR", "write the set as videos with their truth, and stop"},
     OptionSpec{"--min-recall", "F", "exit 1 when fewer target pushes press"},
     OptionSpec{"--max-false-per-minute", "F", "exit 1 with more false clicks a minute"},
