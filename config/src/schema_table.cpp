@@ -178,7 +178,8 @@ const std::vector<Key>& schema() {
             [](auto& c) -> auto& { return c.core.tracking.growth_hold; }),
         integer_key(
             "tracking", "repick_difference", 0, 255,
-            "a fresh pick whose patch differs this much on average follows the movement (0: never)",
+            "a fresh pick follows the movement at this difference summed around it, in grey "
+            "levels a pixel of the colour patch (0: never)",
             [](auto& c) -> auto& { return c.core.tracking.repick_difference; }),
         real_key(
             "tracking", "repick_seconds", 0.0, 10.0,

@@ -156,9 +156,11 @@ struct TrackingSettings {
     // never rose (docs/settings.md).
     double max_growth = 0.0;
     double growth_hold = 0.5;
-    // A pick not yet estimated on whose colour patch the difference averages at least
-    // repick_difference grey levels is background the target uncovered: the pick moves to the
-    // difference's centre of mass in this frame, for up to repick_seconds after the first pick.
+    // A pick not yet estimated around which the difference sums to at least repick_difference
+    // grey levels per pixel of the colour patch (color_patch, made odd; the box summed is one
+    // pixel wider where the pick falls between pixels) is background the target uncovered: the
+    // pick moves to the difference's centre of mass in this frame, for up to repick_seconds
+    // after the first pick.
     // At 10 fps a hand entering fast is a smear that has moved 20-40 working pixels a frame; an
     // estimate from the old pick took the wall or the floor and kept it once the hand stopped.
     // 10 and 0.5 s: the click gesture set's target pushes pressed 89.5% -> 92.3% (seed 1) and
