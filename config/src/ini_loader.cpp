@@ -93,7 +93,9 @@ std::string located(const IniFile& file, const std::string& problem) {
             }
         }
     }
-    return file.name + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " + problem;
+    std::string out = file.name;
+    if (line > 0) out.append(":").append(std::to_string(line));
+    return out.append(": ").append(problem);
 }
 
 }  // namespace

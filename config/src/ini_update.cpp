@@ -113,7 +113,7 @@ std::string update_ini_text(std::string_view text, const Config& config,
             lines.insert(lines.begin() + static_cast<std::ptrdiff_t>(*insert_after) + 1, entry);
         } else {
             if (!lines.empty() && !trim(lines.back()).empty()) lines.emplace_back();
-            lines.push_back("[" + std::string(keys[k]->section) + "]");
+            lines.push_back(std::string("[").append(keys[k]->section).append("]"));
             lines.push_back(entry);
         }
     }

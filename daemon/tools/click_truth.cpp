@@ -46,7 +46,7 @@ ClickTruth read_click_truth(const std::string& truth) {
             click.kind = scene::GestureKind::scroll_down;
         } else {
             std::string message = truth;
-            message += ":" + std::to_string(number) + ": ";
+            message.append(":").append(std::to_string(number)).append(": ");
             message += kind;
             message +=
                 ": unknown line (allowed: click, drag, right, double, scroll_up, scroll_down, "

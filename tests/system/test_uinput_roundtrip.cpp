@@ -144,7 +144,7 @@ std::string describe(const std::vector<EvdevEvent>& events) {
         text += libevdev_event_type_get_name(event.type);
         text += " ";
         text += libevdev_event_code_get_name(event.type, event.code);
-        text += " " + std::to_string(event.value) + "\n";
+        text.append(" ").append(std::to_string(event.value)).append("\n");
     }
     return text;
 }

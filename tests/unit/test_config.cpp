@@ -149,7 +149,8 @@ TEST(Schema, EveryChoiceAcceptedAndAWrongWordRejected) {
         for (const auto choice : key.choices) {
             EXPECT_EQ(key.set(config, choice), std::nullopt);
             EXPECT_EQ(key.format(config), choice);
-            joined += (joined.empty() ? "" : "|") + std::string(choice);
+            if (!joined.empty()) joined += '|';
+            joined += choice;
         }
         EXPECT_EQ(key.allowed(), joined);
         const std::string before = key.format(config);

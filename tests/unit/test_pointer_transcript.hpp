@@ -89,7 +89,7 @@ inline std::string format(const core::PointerCommand& command) {
         put("abs " + std::to_string(command.abs_x) + " " + std::to_string(command.abs_y));
     }
     for (const auto& change : command.button_changes()) {
-        put((change.pressed ? "+" : "-") + std::string(core::to_string(change.button)));
+        put(std::string(change.pressed ? "+" : "-").append(core::to_string(change.button)));
     }
     if (command.wheel != 0) put("wheel " + std::to_string(command.wheel));
     if (command.wheel_hi_res != 0) put("hires " + std::to_string(command.wheel_hi_res));

@@ -240,7 +240,7 @@ void print_usage(std::FILE* out) {
     std::string with_settings;
     for (const CommandSpec& command : commands) {
         std::string head = "  " + std::string(command.name);
-        if (!command.operands.empty()) head += " " + std::string(command.operands);
+        if (!command.operands.empty()) head.append(" ").append(command.operands);
         print_block(out, head, command.summary, 19);
         print_options(out, command.options, 6);
         if (command.settings)

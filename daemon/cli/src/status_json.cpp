@@ -71,7 +71,8 @@ std::string status_json(std::string_view text) {
         std::string key(line.substr(0, colon));
         for (char& c : key)
             if (c == ' ') c = '_';
-        out += (first ? "" : ",") + quoted(key) + ":" + json_value(line.substr(colon + 2));
+        if (!first) out += ',';
+        out.append(quoted(key)).append(":").append(json_value(line.substr(colon + 2)));
         first = false;
     }
     return out + "}\n";

@@ -17,7 +17,7 @@ constexpr std::array<core::TrackerState, 5> all_states{
 
 // The text after `"key":` in a JSONL line, or nothing when the key is absent.
 std::optional<std::string_view> field(std::string_view line, std::string_view key) {
-    const std::string pattern = "\"" + std::string(key) + "\":";
+    const std::string pattern = std::string("\"").append(key).append("\":");
     const std::size_t at = line.find(pattern);
     if (at == std::string_view::npos) return std::nullopt;
     return line.substr(at + pattern.size());
@@ -58,7 +58,8 @@ TrackLog read_track_jsonl(const std::filesystem::path& path) {
         const auto state = field(line, "state");
         bool known = false;
         for (const core::TrackerState s : all_states) {
-            if (state && state->starts_with("\"" + std::string(core::to_string(s)) + "\"")) {
+            if (state &&
+                state->starts_with(std::string("\"").append(core::to_string(s)).append("\""))) {
                 sample.state = s;
                 known = true;
             }
