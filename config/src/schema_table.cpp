@@ -290,7 +290,8 @@ const std::vector<Key>& schema() {
             [](auto& c) -> auto& { return c.core.pointer.click.release_rise; }),
         real_key(
             "click", "push_seconds", 0.0, 10.0,
-            "seconds from the push's beginning to the press at most; slower is an approach",
+            "seconds from the rise passing start_rise to its reaching press_rise, at most (each "
+            "moment placed between its frames); slower is an approach",
             [](auto& c) -> auto& { return c.core.pointer.click.push_seconds; }),
         real_key(
             "click", "press_hold_seconds", 0.0, 1.0,

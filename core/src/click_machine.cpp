@@ -57,6 +57,7 @@ ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, b
         baseline_ = 0.0;
         rise_ = 0.0;
         last_raw_ = 0.0;
+        last_scale_ = 0.0;
         result_.state = state_;
         return result_;
     }
@@ -100,6 +101,7 @@ ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, b
     last_frame_ = now_;
     last_where_ = where_;
     last_raw_ = raw_;
+    last_scale_ = scale_;
     result_.state = state_;
     return result_;
 }
@@ -118,6 +120,18 @@ void ClickMachine::follow_baseline() noexcept {
                              ? 1.0 - std::exp(-seconds / settings_.baseline_seconds)
                              : 1.0;
     baseline_ += alpha * (scale_ - baseline_);
+}
+
+// Linear between the two frames: at 10 fps the rise from start_rise to press_rise of a
+// 0.65 s push spans 0.15 s, but its frames fall 0.1 s apart, and counting from the frame before
+// the first to the frame after the last stretched it to 0.3 s, past push_seconds.
+Timestamp ClickMachine::crossed(double level) const noexcept {
+    if (!(last_scale_ > 0.0) || !(baseline_ > 0.0) || now_ <= last_frame_) return now_;
+    const double before = last_scale_ / baseline_ - 1.0;
+    if (before >= level) return last_frame_;  // there already (the baseline moved since)
+    if (rise_ < level) return now_;
+    const double fraction = (level - before) / (rise_ - before);
+    return last_frame_ + static_cast<Timestamp>(fraction * static_cast<double>(now_ - last_frame_));
 }
 
 bool ClickMachine::held(bool condition) noexcept {
@@ -202,7 +216,7 @@ void ClickMachine::on_inactive() noexcept {
 
 void ClickMachine::on_idle() noexcept {
     if (rise_ > settings_.start_rise) {
-        push_began_ = last_frame_;
+        push_began_ = crossed(settings_.start_rise);
         push_from_ = last_where_;
         push_raw_ = last_raw_;
         push_peak_ = 0.0;
@@ -216,7 +230,7 @@ void ClickMachine::on_idle() noexcept {
 
 void ClickMachine::on_rising() noexcept {
     // A rise the depth signal held back for a frame counts from that frame.
-    const Timestamp rose_at = late_ ? last_frame_ : now_;
+    const Timestamp rose_at = late_ ? last_frame_ : crossed(settings_.press_rise);
     const bool in_time = static_cast<double>(rose_at - push_began_) / 1e6 <= settings_.push_seconds;
     // The rise must reach press_rise within push_seconds; holding it there may take longer.
     const bool high = rise_ >= settings_.press_rise && (in_time || held_since_);

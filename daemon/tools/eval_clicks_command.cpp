@@ -239,13 +239,13 @@ Tallies score_all(const std::vector<TrackedClip>& clips, const core::PointerSett
     return tallies;
 }
 
-// The sweep of docs/clicks.md: press_rise along each series; push_seconds and the time the rise
-// must be held (press_hold_seconds) across them.
+// The sweep of docs/clicks.md: press_rise along each series; push_seconds (the settings' and two
+// longer) and the time the rise must be held (press_hold_seconds) across them.
 std::vector<SweepPoint> sweep(const std::vector<TrackedClip>& clips,
                               const core::PointerSettings& base) {
     std::vector<SweepPoint> points;
     for (const double hold : {0.0, 0.05}) {
-        for (const double push : {0.25, 0.4, 0.6}) {
+        for (const double push : {base.click.push_seconds, 0.4, 0.6}) {
             char series[64];
             std::snprintf(series, sizeof series, "push %.2f s, hold %.2f s", push, hold);
             for (const double rise : {0.10, 0.12, 0.14, 0.16, 0.18, 0.20, 0.25}) {
@@ -284,7 +284,10 @@ bool meets(const EvalOptions& options, const Tallies& tallies) {
     };
     check(options.min_recall, target.press_recall(), true, "target pushes pressed");
     check(options.max_false, all.false_per_minute(), false, "false clicks a minute");
-    check(options.max_latency_ms, median(all.latencies) * 1000, false, "median latency (ms)");
+    // Of the target pushes, as the table's latency target is: a slower, shallower push that
+    // presses at all presses later, and must not count against the limit for pressing.
+    check(options.max_latency_ms, median(target.latencies) * 1000, false,
+          "median latency of the target pushes (ms)");
     check(options.max_offset_px, median(all.offsets), false, "median offset (px)");
     const std::pair<const char*, const GestureTally*> gestures[] = {
         {"right click", &all.right}, {"double click", &all.double_click}, {"scroll", &all.scroll}};

@@ -117,23 +117,41 @@ TEST(ClickMachine, AHeldRiseReachedInTimePressesAfterPushSeconds) {
 }
 
 TEST(ClickMachine, ARiseSlowerThanPushSecondsDoesNotPress) {
-    // 3% a frame: the rise passes 20% 0.6 s after it passed 5%, too slow for a push.
+    // 3% a frame: the rise passes 20% 0.5 s after it passed 5%, too slow for a push. Each
+    // crossing is placed between its frames: 5% two thirds of the way from 300 to 400 ms.
     PointerController pointer(depth(), aspect);
     // clang-format off
     play(pointer, {
         {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
         { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
         { 300,   T,       0.5,  0.5,  0.206,  "idle",       ""},       // +3%
-        { 400,   T,       0.5,  0.5,  0.212,  "rising",     ""},       // +6%: began after 300
+        { 400,   T,       0.5,  0.5,  0.212,  "rising",     ""},       // +6%: began at 367
         { 500,   T,       0.5,  0.5,  0.218,  "rising",     ""},
-        { 600,   T,       0.5,  0.5,  0.224,  "rising",     ""},       // 0.3 s
-        { 700,   T,       0.5,  0.5,  0.230,  "drifting",   ""},       // 0.4 s > 0.35 s
-        { 800,   T,       0.5,  0.5,  0.236,  "drifting",   ""},
+        { 600,   T,       0.5,  0.5,  0.224,  "rising",     ""},
+        { 700,   T,       0.5,  0.5,  0.230,  "rising",     ""},       // 0.33 s, under 20%
+        { 800,   T,       0.5,  0.5,  0.236,  "drifting",   ""},       // 0.43 s > 0.35 s
         { 900,   T,       0.5,  0.5,  0.242,  "drifting",   ""},       // +21%: still no press
         {1000,   T,       0.5,  0.5,  0.260,  "drifting",   ""},       // +30%
         {1100,   T,       0.5,  0.5,  0.205,  "idle",       ""},       // back near the baseline
         {1200,   T,       0.5,  0.5,  0.230,  "rising",     ""},       // a real push now
         {1300,   T,       0.5,  0.5,  0.250,  "pressed",    "+left"},
+    });
+    // clang-format on
+}
+
+TEST(ClickMachine, APushIsTimedFromCrossingToCrossingNotFrameToFrame) {
+    // 4.5% a frame at 10 fps: the rise passes 5% at 311 ms and 20% at 644 ms, 0.33 s apart,
+    // within push_seconds (0.35 s), though the frames around the two crossings are 0.4 s apart.
+    PointerController pointer(depth(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.209,  "idle",       ""},       // +4.5%
+        { 400,   T,       0.5,  0.5,  0.218,  "rising",     ""},       // +9%: 5% at 311
+        { 500,   T,       0.5,  0.5,  0.227,  "rising",     ""},
+        { 600,   T,       0.5,  0.5,  0.236,  "rising",     ""},       // +18%
+        { 700,   T,       0.5,  0.5,  0.245,  "pressed",    "+left"},  // +22.5%: 20% at 644
     });
     // clang-format on
 }
@@ -151,16 +169,16 @@ TEST(ClickMachine, TheBaselineFollowsASlowApproach) {
         {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
         { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
         { 400,   T,       0.5,  0.5,  0.209,  "idle",       ""},        // +4.5%, 0.2016
-        { 600,   T,       0.5,  0.5,  0.218,  "rising",     ""},        // +8.1%: began after 400
-        { 800,   T,       0.5,  0.5,  0.227,  "drifting",   ""},        // +12.6% 0.4 s in
-        {1000,   T,       0.5,  0.5,  0.236,  "drifting",   ""},        // +14.4%, 0.2116
+        { 600,   T,       0.5,  0.5,  0.218,  "rising",     ""},        // +8.1%: 5% at 460 ms
+        { 800,   T,       0.5,  0.5,  0.227,  "rising",     ""},        // +12.6%, 0.34 s in
+        {1000,   T,       0.5,  0.5,  0.236,  "drifting",   ""},        // +17%, 0.54 s in; 0.2079
         {1400,   T,       0.5,  0.5,  0.254,  "drifting",   ""},
         {1800,   T,       0.5,  0.5,  0.272,  "drifting",   ""},
-        {2200,   T,       0.5,  0.5,  0.290,  "drifting",   ""},        // +18%, 0.25
+        {2200,   T,       0.5,  0.5,  0.290,  "drifting",   ""},        // +21%, 0.256
         {2400,   T,       0.5,  0.5,  0.300,  "drifting",   ""},
         {3000,   T,       0.5,  0.5,  0.300,  "drifting",   ""},        // +14%
         {3500,   T,       0.5,  0.5,  0.300,  "drifting",   ""},        // +7%
-        {4000,   T,       0.5,  0.5,  0.300,  "idle",       ""},        // +4.3%, 0.29
+        {4000,   T,       0.5,  0.5,  0.300,  "idle",       ""},        // +4.2%, 0.293
         {4500,   T,       0.5,  0.5,  0.300,  "idle",       ""},
         {4600,   T,       0.5,  0.5,  0.330,  "rising",     ""},        // +12%
         {4700,   T,       0.5,  0.5,  0.375,  "pressed",    "+left"},   // +27%
@@ -324,7 +342,8 @@ TEST(ClickMachine, ReleasesByItselfWhenTheTargetGoesOrIsNotReady) {
     EXPECT_EQ(machine.step(0, 0.2, true).state, ClickState::idle);
     const ClickStep press = machine.step(100'000, 0.26, true);
     EXPECT_TRUE(press.press);
-    EXPECT_EQ(press.push_began, 0);
+    // The rise passed start_rise (5%) a sixth of the way to this frame's 30%.
+    EXPECT_EQ(press.push_began, 16'666);
     const ClickStep gone = machine.step(200'000, std::nullopt, true);
     EXPECT_TRUE(gone.release);
     EXPECT_EQ(gone.state, ClickState::inactive);

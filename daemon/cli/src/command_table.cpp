@@ -91,7 +91,7 @@ constexpr std::array eval_clicks_options{
     OptionSpec{"--write", "DIR", "write the set as videos with their truth, and stop"},
     OptionSpec{"--min-recall", "F", "exit 1 when fewer target pushes press"},
     OptionSpec{"--max-false-per-minute", "F", "exit 1 with more false clicks a minute"},
-    OptionSpec{"--max-latency-ms", "F", "exit 1 with a longer median latency"},
+    OptionSpec{"--max-latency-ms", "F", "exit 1 with a longer median latency (target pushes)"},
     OptionSpec{"--max-offset-px", "F", "exit 1 with a larger median offset"},
     OptionSpec{"--min-gesture-recall", "F",
                "exit 1 when a right click, double click or scroll is recognised less"},

@@ -97,6 +97,10 @@ class ClickMachine {
 
     void follow_baseline() noexcept;
     double seconds_since(Timestamp then) const noexcept;
+    // When the rise crossed `level` between the previous frame and this one (linearly in the
+    // scale); the previous frame's time when the rise was there already, this frame's when it
+    // is not there yet.
+    Timestamp crossed(double level) const noexcept;
     // Whether `condition` has held for press_hold_seconds up to this frame.
     bool held(bool condition) noexcept;
     void release() noexcept;
@@ -110,9 +114,10 @@ class ClickMachine {
     Timestamp push_began_ = 0;
     cv::Point2d push_from_;  // where the push began: the position of the frame before RISING
     cv::Point2d last_where_;
-    double last_raw_ = 0.0;   // the previous frame's raw scale
-    double push_raw_ = 0.0;   // the raw scale on the frame before RISING
-    double push_peak_ = 0.0;  // RISING: the largest scale since the push began
+    double last_raw_ = 0.0;    // the previous frame's raw scale
+    double last_scale_ = 0.0;  // the previous frame's scale (the depth signal); 0: none
+    double push_raw_ = 0.0;    // the raw scale on the frame before RISING
+    double push_peak_ = 0.0;   // RISING: the largest scale since the push began
     Timestamp pressed_at_ = 0;
     Timestamp released_at_ = 0;
     // Since when the rise has been at press_rise (RISING) or at release_rise (PRESSED,
