@@ -169,6 +169,11 @@ const std::vector<Key>& schema() {
             "never drop a target as still that had its share of the movement this recently",
             [](auto& c) -> auto& { return c.core.tracking.abandon_grace; }),
         real_key(
+            "tracking", "abandon_still_share", 0.0, 1.0,
+            "a target with less than this share of the movement around it has none: quiet "
+            "frames do not restart its time away",
+            [](auto& c) -> auto& { return c.core.tracking.abandon_still_share; }),
+        real_key(
             "tracking", "max_growth", 0.0, 100.0,
             "hold back an estimate whose area grows more than this factor in 1/30 s (0: never)",
             [](auto& c) -> auto& { return c.core.tracking.max_growth; }),

@@ -20,6 +20,7 @@ Settings paper_settings() {
     settings.tracking.recover_small = false;
     settings.tracking.abandon_seconds = 0.0;
     settings.tracking.abandon_grace = 0.0;
+    settings.tracking.abandon_still_share = 0.0;
     settings.tracking.repick_difference = 0;
     settings.tracking.search_weighting = SearchWeighting::all;
     settings.output.smoothing = SmoothingKind::ema;

@@ -288,14 +288,18 @@ bool StateMachine::still_too_long() const noexcept {
 // part of the scene the tracker locked on (a body, a sleeve, a shelf), and the hand is elsewhere.
 // Not a target that had its share of the movement within abandon_grace: that is a hand slowing
 // at the turn of a wave while something else moves (a ball or a person passing behind it).
+// A frame at or under the search threshold restarts the time away (a waving hand dips under it at
+// each turn), unless the last frame over it left the target none of the movement at all.
 bool StateMachine::moving_elsewhere(const Estimate& estimate) noexcept {
     const double movement = evidence_->movement();
-    if (settings_.abandon_seconds <= 0.0 || movement <= search_threshold_) {
-        elsewhere_since_.reset();
+    if (settings_.abandon_seconds <= 0.0) return false;
+    if (movement <= search_threshold_) {
+        if (!none_around_) elsewhere_since_.reset();
         return false;
     }
-    if (evidence_->movement_near(estimate.centroid, motion_radius(estimate.area)) >=
-        settings_.abandon_share * movement) {
+    const double around = evidence_->movement_near(estimate.centroid, motion_radius(estimate.area));
+    none_around_ = around < settings_.abandon_still_share * movement;
+    if (around >= settings_.abandon_share * movement) {
         elsewhere_since_.reset();
         owned_motion_at_ = now_;
         return false;
@@ -311,6 +315,7 @@ void StateMachine::drop_target(LossReason reason) noexcept {
     result_.loss = reason;
     still_since_.reset();
     elsewhere_since_.reset();
+    none_around_ = false;
     owned_motion_at_.reset();
     held_since_.reset();
     result_.has_target = false;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The state machine's rules that are not the paper's, as transcripts: letting go of a still
-// target while the movement is elsewhere (abandon_seconds, abandon_grace) and holding back an
-// estimate that grew too fast (max_growth). Working image 160x120 (state_machine_testing.hpp).
+// target while the movement is elsewhere (abandon_seconds, abandon_grace, abandon_still_share)
+// and holding back an estimate that grew too fast (max_growth). Working image 160x120
+// (state_machine_testing.hpp).
 
 #include <vector>
 
@@ -40,6 +41,32 @@ TEST(StateMachine, TargetIsDroppedWhenTheMovementStaysElsewhere) {
         {0.9,  60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
     });
     // clang-format on
+}
+
+TEST(StateMachine, QuietFramesDoNotRestartTheTimeAwayOfATargetWithNoMovementAround) {
+    // abandon_still_share 0.02: at 0.2 s none of the 60,000 is around the target (a window frame
+    // beside a waving hand), so the frame at the search threshold at 0.3 s does not restart the
+    // clock and the target is dropped at 0.5 s, 0.3 s after 0.2 s. The same with 5,000 around it
+    // (8%: under abandon_share, over abandon_still_share) restarts at 0.3 s, as a hand at a turn.
+    TrackingSettings s = paper(2.0, true);
+    s.abandon_seconds = 0.3;
+    s.abandon_still_share = 0.02;
+    for (const double around : {0.0, 5000.0}) {
+        SCOPED_TRACE(around);
+        const bool dropped = around == 0.0;
+        StateMachine machine(s, paper_size);
+        // clang-format off
+        play(machine, {
+            {0.0, 0,     none, {},             {skin, {}}, St::searching},
+            {0.1, 60000, P,    {},             {skin, {}}, St::tracking,  Ev::acquired},
+            {0.2, 60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, around},
+            {0.3, 57600, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, around},
+            {0.4, 60000, none, {est(P, 1000)}, {skin, {}}, St::tracking,  Ev::none, around},
+            {0.5, 60000, none, {est(P, 1000)}, {skin, {}},
+             dropped ? St::searching : St::tracking, dropped ? Ev::elsewhere : Ev::none, around},
+        });
+        // clang-format on
+    }
 }
 
 TEST(StateMachine, TargetThatMovedWithinTheGraceIsNotAbandoned) {

@@ -146,6 +146,14 @@ struct TrackingSettings {
     // seeds (50-93% tracked) and takes it on none (95-100%); 0.7 s and 1 s lost the real hand
     // 5 points (docs/settings.md). 0 = from the first frame away, as before.
     double abandon_grace = 0.5;
+    // A target with less than abandon_still_share of such a frame's movement around it has
+    // none of it: a still part of the scene beside a moving hand (a window frame, a shelf), not
+    // a hand at a turn, which still moves a little. Its time away then runs on through the
+    // frames at or under the search threshold that follow, which restart it for a target that
+    // only fell under abandon_share. 0.02: the real hand 21.5% to 36.5% tracked (a strip of
+    // window frame held for 4 s while the hand waved beside it, its surroundings at exactly 0),
+    // no rendered clip changed; 0.001 kept most of the strip (docs/settings.md). 0 = off.
+    double abandon_still_share = 0.02;
     // An estimate whose area is over max_growth times the last accepted one per 1/30 s (the
     // factor compounds with the time since that estimate) is a merge with something of the
     // target's colour, not the target: the last estimate stands for up to growth_hold seconds.

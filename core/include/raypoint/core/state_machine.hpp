@@ -108,10 +108,12 @@ class StateMachine {
     std::optional<Timestamp> held_since_;
     Timestamp picked_at_ = 0;                   // when SEARCHING picked the target
     std::optional<Timestamp> elsewhere_since_;  // the target still, the scene's motion not
-    cv::Point2f inner_;                         // the inner point after the previous frame
-    Estimate candidate_;                        // TRACKING's estimate, waiting for VALIDATING
-    cv::Vec3f reference_color_;                 // the target's colour the last time it moved
-    bool estimated_ = false;  // the target has had an estimate accepted since it was picked
+    // The last frame over the search threshold left the target under abandon_still_share of it.
+    bool none_around_ = false;
+    cv::Point2f inner_;          // the inner point after the previous frame
+    Estimate candidate_;         // TRACKING's estimate, waiting for VALIDATING
+    cv::Vec3f reference_color_;  // the target's colour the last time it moved
+    bool estimated_ = false;     // the target has had an estimate accepted since it was picked
 
     // The frame being stepped.
     Timestamp now_ = 0;
