@@ -342,6 +342,11 @@ const std::vector<Key>& schema() {
             "time constant of the baseline that follows slow changes in distance",
             [](auto& c) -> auto& { return c.core.pointer.click.baseline_seconds; }),
         real_key(
+            "click", "settle_seconds", 0.0, 10.0,
+            "this long after the tracker's region changes, an idle baseline rises with the size "
+            "(0: off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.settle_seconds; }),
+        real_key(
             "click", "right_seconds", 0.0, 10.0,
             "a push held still this many seconds, then pulled back without moving, "
             "right-clicks (0 = off); with it on, a push's left press waits for the pull-back or "

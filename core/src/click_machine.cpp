@@ -43,10 +43,13 @@ bool ClickMachine::release_all() noexcept {
 }
 
 ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, bool ready,
-                             cv::Point2d where, bool late, double raw) noexcept {
+                             cv::Point2d where, bool late, double raw, bool absorbed) noexcept {
     now_ = timestamp;
     where_ = where;
     late_ = late;
+    // A step given back was the target's own (a push blurred for a frame), not a region change.
+    if (late) absorbed_at_.reset();
+    if (absorbed) absorbed_at_ = now_;
     result_ = ClickStep{};
     if (!scale || !(*scale > 0.0) || !ready) {
         // Whatever the state, the button comes up: nothing may stay pressed without a target
@@ -215,6 +218,13 @@ void ClickMachine::on_inactive() noexcept {
 }
 
 void ClickMachine::on_idle() noexcept {
+    // The region is still changing after a step the depth signal took out: its growth is the
+    // region taking in more, not a push. Never down: a flicker's return would be a rise.
+    if (absorbed_at_ && settings_.settle_seconds > 0.0 &&
+        seconds_since(*absorbed_at_) <= settings_.settle_seconds) {
+        baseline_ = std::max(baseline_, scale_);
+        return;
+    }
     if (rise_ > settings_.start_rise) {
         push_began_ = crossed(settings_.start_rise);
         push_from_ = last_where_;

@@ -39,6 +39,7 @@ Settings paper_settings() {
     click.refractory_seconds = 0.3;
     click.drag_seconds = 0.8;
     click.baseline_seconds = 1.0;
+    click.settle_seconds = 0.0;
     return settings;
 }
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The depth signal (depth_signal.hpp) and the push model (push_travel, push_dip) as transcripts
-// (test_pointer_transcript.hpp): 10 fps rows in, the click state and the device command out.
-// The transcripts' centroid is the row's x, y, as the smoothed position is. Settings: those of
-// test_click_machine.cpp (start 5%, press 20%, release 10%, push 0.35 s, no hold, a constant
-// baseline) with, in each test, the part under test on.
+// The depth signal (depth_signal.hpp), the settling after its steps (settle_seconds) and the
+// push model (push_travel, push_dip) as transcripts (test_pointer_transcript.hpp): 10 fps rows in,
+// the click state and the device command out. The transcripts' centroid is the row's x, y, as the
+// smoothed position is. Settings: those of test_click_machine.cpp (start 5%, press 20%, release
+// 10%, push 0.35 s, no hold, a constant baseline) with, in each test, the part under test on.
 
 #include <gtest/gtest.h>
 
@@ -46,6 +46,40 @@ TEST(DepthSignal, AStepWithACentroidJumpThatStaysIsNotAPush) {
         { 600,   T,       0.56, 0.5,  0.270,  "idle",       ""},
         { 700,   T,       0.56, 0.5,  0.300,  "rising",     ""},           // +11%: a push
         { 800,   T,       0.56, 0.5,  0.330,  "pressed",    "+left"},      // +22%
+    });
+    // clang-format on
+}
+
+TEST(DepthSignal, AMergeStillGrowingAfterItsStepRaisesTheBaseline) {
+    // settle_seconds 0.1: the region takes in a ball passing, +35% with the centroid 0.3 of the
+    // size away (absorbed), and takes in more on the next frame, +11% with the centroid still.
+    // That growth raises the baseline instead of starting a push; a push after the 0.1 s
+    // presses. Without settle_seconds the merge's growth is a push and presses at 700 ms.
+    PointerSettings settings = glitches();
+    settings.click.settle_seconds = 0.1;
+    PointerController settling(settings, aspect);
+    // clang-format off
+    play(settling, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.56, 0.5,  0.270,  "idle",       "rel -60 0"},  // absorbed
+        { 500,   T,       0.56, 0.5,  0.300,  "idle",       ""},           // the baseline +11%
+        { 600,   T,       0.56, 0.5,  0.300,  "idle",       ""},
+        { 700,   T,       0.56, 0.5,  0.330,  "rising",     ""},           // +10%: a push
+        { 800,   T,       0.56, 0.5,  0.370,  "pressed",    "+left"},      // +23%
+    });
+    settings.click.settle_seconds = 0.0;
+    PointerController not_settling(settings, aspect);
+    play(not_settling, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.56, 0.5,  0.270,  "idle",       "rel -60 0"},
+        { 500,   T,       0.56, 0.5,  0.300,  "rising",     ""},           // +11%
+        { 600,   T,       0.56, 0.5,  0.300,  "rising",     ""},
+        { 700,   T,       0.56, 0.5,  0.330,  "pressed",    "+left"},      // +22%
     });
     // clang-format on
 }

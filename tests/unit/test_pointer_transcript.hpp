@@ -62,6 +62,7 @@ inline core::PointerSettings depth_pointer() {
     s.click.glitch_jump = 0.0;
     s.click.push_travel = 0.0;
     s.click.push_dip = 0.0;
+    s.click.settle_seconds = 0.0;
     s.safety.min_tracking_seconds = 0.2;
     return s;
 }

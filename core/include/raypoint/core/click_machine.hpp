@@ -67,8 +67,10 @@ class ClickMachine {
     // late: the scale's change on this frame happened on the previous one (the depth signal
     // gave back a step it had held for a frame), so push_seconds counts to that frame.
     // raw: sqrt(area) before the depth signal took steps out; 0: the same as scale.
+    // absorbed: the depth signal took a step out on this frame (settle_seconds).
     ClickStep step(Timestamp timestamp, std::optional<double> scale, bool ready,
-                   cv::Point2d where = {}, bool late = false, double raw = 0.0) noexcept;
+                   cv::Point2d where = {}, bool late = false, double raw = 0.0,
+                   bool absorbed = false) noexcept;
 
     // Pause, exit, signal: back to inactive. True when a button was down and must be released.
     bool release_all() noexcept;
@@ -133,6 +135,8 @@ class ClickMachine {
     double still_scale_ = 0.0;
     Timestamp still_since_ = 0;
     double scroll_y_ = 0.0;  // SCROLLING: y of the previous frame
+    // The last frame on which the depth signal took a step out (settle_seconds).
+    std::optional<Timestamp> absorbed_at_;
 
     // The frame being stepped.
     Timestamp now_ = 0;

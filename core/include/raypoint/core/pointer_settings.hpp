@@ -103,6 +103,15 @@ struct ClickSettings {
     // drifts closer or away, so a click works again 1.6 s after settling at a new distance.
     // It is held while a push may be under way, so it never swallows one.
     double baseline_seconds = 1.0;
+    // For this long after the depth signal takes a step out (the tracker's region changed: a
+    // ball or a hand passing merges with the target, a region flickers), an idle baseline rises
+    // with the scale: a merge goes on growing for a frame or two after its first step, and that
+    // growth is not the target coming closer. Only up: a region that flickered smaller must not
+    // lower it, or its return is a rise. 0: off. 0.1 s (3 frames at 30 fps, 1 at 10 fps): false
+    // clicks on the gesture set 4 / 8 / 6 to 1 / 5 / 5 at seeds 1 / 2 / 3, target pushes the
+    // same; a push whose region changes on its way loses its rise (double clicks recognised
+    // 5 of 180 fewer; docs/clicks.md).
+    double settle_seconds = 0.1;
     // The optional gestures (docs/pointer.md). With right click or scroll on, a push presses no
     // button until it is known which gesture it is: pulling back clicks (press and release
     // together), moving past hold_radius drags (or scrolls), holding still, then pulling back,
