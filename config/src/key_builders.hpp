@@ -150,4 +150,8 @@ Key choice_key(std::string_view section, std::string_view name, std::string_view
     return key;
 }
 
+// The keys of [output], [pointer], [click], [dwell], [safety] and [camera], in that order
+// (schema_output_table.cpp); schema() puts them after the tracker's.
+std::vector<Key> output_keys();
+
 }  // namespace raypoint::config::detail

@@ -1,0 +1,199 @@
+// SPDX-License-Identifier: MIT
+// The table's second half: what the tracker's output becomes (smoothing, cursor, clicks) and the
+// daemon's camera. schema_table.cpp holds the tracker's own settings and joins the two.
+
+#include "key_builders.hpp"
+
+namespace raypoint::config::detail {
+
+using core::SmoothingKind;
+
+std::vector<Key> output_keys() {
+    return {
+        // [output] paper 4.3
+        choice_key<SmoothingKind>(
+            "output", "smoothing", "position smoothing: exponential once a frame, or One Euro",
+            {{SmoothingKind::ema, "ema"}, {SmoothingKind::one_euro, "one-euro"}},
+            [](auto& c) -> auto& { return c.core.output.smoothing; }),
+        real_key(
+            "output", "ema_weight", 0.0, 0.999, "ema: weight of the previous position",
+            [](auto& c) -> auto& { return c.core.output.ema_weight; }),
+        real_key(
+            "output", "one_euro_min_cutoff", 0.001, 100.0,
+            "one-euro: cutoff at rest in Hz (lower: steadier)",
+            [](auto& c) -> auto& { return c.core.output.one_euro_min_cutoff; }),
+        real_key(
+            "output", "one_euro_beta", 0.0, 1000.0,
+            "one-euro: cutoff increase with speed (higher: less lag)",
+            [](auto& c) -> auto& { return c.core.output.one_euro_beta; }),
+        real_key(
+            "output", "one_euro_d_cutoff", 0.001, 100.0,
+            "one-euro: cutoff of the speed estimate in Hz",
+            [](auto& c) -> auto& { return c.core.output.one_euro_d_cutoff; }),
+        // [pointer] docs/pointer.md: tracked position to cursor motion
+        choice_key<core::PointerMode>(
+            "pointer", "mode",
+            "relative (REL_X/REL_Y, like a mouse) or absolute (the view maps onto the screen)",
+            {{core::PointerMode::relative, "relative"}, {core::PointerMode::absolute, "absolute"}},
+            [](auto& c) -> auto& { return c.core.pointer.motion.mode; }),
+        boolean_key(
+            "pointer", "mirror", "mirror the camera horizontally, so moving right moves right",
+            [](auto& c) -> auto& { return c.core.pointer.motion.mirror; }),
+        real_key(
+            "pointer", "gain", 0.0, 100000.0,
+            "relative: device pixels per frame width of hand motion at slow speed",
+            [](auto& c) -> auto& { return c.core.pointer.motion.gain; }),
+        real_key(
+            "pointer", "dead_zone", 0.0, 10.0,
+            "relative: frame widths per second taken off the hand's speed (jitter moves nothing)",
+            [](auto& c) -> auto& { return c.core.pointer.motion.dead_zone; }),
+        real_key(
+            "pointer", "acceleration", 0.0, 100.0,
+            "relative: gain x (1 + this x speed over the dead zone in frame widths per second)",
+            [](auto& c) -> auto& { return c.core.pointer.motion.acceleration; }),
+        integer_key(
+            "pointer", "absolute_max", 1, 1000000,
+            "absolute: the device range is 0 to this on both axes",
+            [](auto& c) -> auto& { return c.core.pointer.motion.absolute_max; }),
+        real_key(
+            "pointer", "active_left", 0.0, 1.0,
+            "absolute: left edge of the view's active area, fraction of the mirrored frame",
+            [](auto& c) -> auto& { return c.core.pointer.motion.active_left; }),
+        real_key(
+            "pointer", "active_right", 0.0, 1.0,
+            "absolute: right edge of the view's active area, fraction of the mirrored frame",
+            [](auto& c) -> auto& { return c.core.pointer.motion.active_right; }),
+        real_key(
+            "pointer", "active_top", 0.0, 1.0,
+            "absolute: top edge of the view's active area, fraction of the frame",
+            [](auto& c) -> auto& { return c.core.pointer.motion.active_top; }),
+        real_key(
+            "pointer", "active_bottom", 0.0, 1.0,
+            "absolute: bottom edge of the view's active area, fraction of the frame",
+            [](auto& c) -> auto& { return c.core.pointer.motion.active_bottom; }),
+        // [click] docs/pointer.md: a push toward the camera clicks; rises are of sqrt(area)
+        choice_key<core::ClickMode>(
+            "click", "mode", "click by pushing toward the camera, by dwelling still, or not at all",
+            {{core::ClickMode::depth, "depth"},
+             {core::ClickMode::dwell, "dwell"},
+             {core::ClickMode::off, "off"}},
+            [](auto& c) -> auto& { return c.core.pointer.click.mode; }),
+        real_key(
+            "click", "start_rise", 0.0, 5.0,
+            "a push begins when sqrt(area) rises this far over its baseline (0.05 = 5%)",
+            [](auto& c) -> auto& { return c.core.pointer.click.start_rise; }),
+        real_key(
+            "click", "press_rise", 0.0, 5.0,
+            "the button goes down when the rise reaches this within push_seconds",
+            [](auto& c) -> auto& { return c.core.pointer.click.press_rise; }),
+        real_key(
+            "click", "release_rise", 0.0, 5.0,
+            "the button comes up when the rise falls to this (below press_rise: hysteresis)",
+            [](auto& c) -> auto& { return c.core.pointer.click.release_rise; }),
+        real_key(
+            "click", "push_seconds", 0.0, 10.0,
+            "seconds from the rise passing start_rise to its reaching press_rise, at most (each "
+            "moment placed between its frames); slower is an approach",
+            [](auto& c) -> auto& { return c.core.pointer.click.push_seconds; }),
+        real_key(
+            "click", "press_hold_seconds", 0.0, 1.0,
+            "seconds of frame time the rise must stay at press_rise to press (and at "
+            "release_rise to release): one odd frame neither presses nor releases",
+            [](auto& c) -> auto& { return c.core.pointer.click.press_hold_seconds; }),
+        real_key(
+            "click", "release_drop", 0.0, 0.9,
+            "the button also comes up when sqrt(area) falls this far below its largest while "
+            "down (0.25 = 25%; 0 = off): a drag that changed the size still releases",
+            [](auto& c) -> auto& { return c.core.pointer.click.release_drop; }),
+        real_key(
+            "click", "glitch_step", 0.0, 5.0,
+            "a one-frame change of sqrt(area) this large (relative) that comes with a "
+            "centroid jump of glitch_jump is the tracker's region changing: taken out of the "
+            "depth signal",
+            [](auto& c) -> auto& { return c.core.pointer.click.glitch_step; }),
+        real_key(
+            "click", "glitch_jump", 0.0, 10.0,
+            "the centroid's one-frame jump, in units of the target's size, that marks a step "
+            "of glitch_step as the region changing (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.glitch_jump; }),
+        real_key(
+            "click", "push_travel", 0.0, 10.0,
+            "while a push rises, the position may move this many times the target's size; "
+            "farther it is an approach while moving, not a push (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.push_travel; }),
+        real_key(
+            "click", "push_dip", 0.0, 1.0,
+            "while a push rises, sqrt(area) may fall this far (relative) under its largest "
+            "since the push began; farther it is a wobble, not a push (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.push_dip; }),
+        real_key(
+            "click", "refractory_seconds", 0.0, 10.0,
+            "seconds after a release during which no press can come",
+            [](auto& c) -> auto& { return c.core.pointer.click.refractory_seconds; }),
+        real_key(
+            "click", "drag_seconds", 0.0, 600.0,
+            "held pushed this many seconds, the press becomes a drag: x and y move again",
+            [](auto& c) -> auto& { return c.core.pointer.click.drag_seconds; }),
+        real_key(
+            "click", "baseline_seconds", 0.0, 600.0,
+            "time constant of the baseline that follows slow changes in distance",
+            [](auto& c) -> auto& { return c.core.pointer.click.baseline_seconds; }),
+        real_key(
+            "click", "settle_seconds", 0.0, 10.0,
+            "this long after the tracker's region changes, an idle baseline rises with the size "
+            "(0: off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.settle_seconds; }),
+        real_key(
+            "click", "right_seconds", 0.0, 10.0,
+            "a push held still this many seconds, then pulled back without moving, "
+            "right-clicks (0 = off); with it on, a push's left press waits for the pull-back or "
+            "a move",
+            [](auto& c) -> auto& { return c.core.pointer.click.right_seconds; }),
+        real_key(
+            "click", "scroll_gain", 0.0, 1000.0,
+            "wheel detents a frame width of vertical motion while a push is held (0 = off): "
+            "a held push moving up or down scrolls, sideways it drags",
+            [](auto& c) -> auto& { return c.core.pointer.click.scroll_gain; }),
+        real_key(
+            "click", "double_seconds", 0.0, 10.0,
+            "a push beginning within this many seconds of a click's release double-clicks "
+            "(0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.double_seconds; }),
+        real_key(
+            "click", "hold_radius", 0.0, 1.0,
+            "frame widths a held push may move before it drags or scrolls (right_seconds or "
+            "scroll_gain on)",
+            [](auto& c) -> auto& { return c.core.pointer.click.hold_radius; }),
+        // [dwell] click.mode = dwell
+        real_key(
+            "dwell", "seconds", 0.0, 60.0, "the cursor held still this many seconds clicks",
+            [](auto& c) -> auto& { return c.core.pointer.dwell.seconds; }),
+        real_key(
+            "dwell", "radius", 0.0, 1.0,
+            "still means within this distance of where it stopped, in frame widths",
+            [](auto& c) -> auto& { return c.core.pointer.dwell.radius; }),
+        // [safety]
+        real_key(
+            "safety", "min_tracking_seconds", 0.0, 600.0,
+            "no click until the target has been tracked this many seconds",
+            [](auto& c) -> auto& { return c.core.pointer.safety.min_tracking_seconds; }),
+        // [camera] the daemon's webcam
+        device_key(
+            "camera", "device",
+            "the webcam: auto (the first that streams), /dev/videoN or /dev/v4l/by-id/...",
+            [](auto& c) -> auto& { return c.camera.device; }),
+        boolean_key(
+            "camera", "lock_exposure",
+            "lock auto exposure, gain and white balance, so brightness cannot jump",
+            [](auto& c) -> auto& { return c.camera.lock_exposure; }),
+        integer_key(
+            "camera", "min_width", 160, 3840,
+            "capture at the camera's smallest size at least min_width x min_height (else any)",
+            [](auto& c) -> auto& { return c.camera.min_width; }),
+        integer_key(
+            "camera", "min_height", 120, 2160, "see min_width; MJPEG is decoded down to it",
+            [](auto& c) -> auto& { return c.camera.min_height; }),
+    };
+}
+
+}  // namespace raypoint::config::detail
