@@ -117,6 +117,11 @@ std::vector<Key> output_keys() {
             "of glitch_step as the region changing (0 = off)",
             [](auto& c) -> auto& { return c.core.pointer.click.glitch_jump; }),
         real_key(
+            "click", "glitch_return", 0.0, 1.0,
+            "a step taken out is given back on the next frame when the centroid has come back "
+            "this share of its jump (1 = exactly back): it was a push whose frame blurred",
+            [](auto& c) -> auto& { return c.core.pointer.click.glitch_return; }),
+        real_key(
             "click", "push_travel", 0.0, 10.0,
             "while a push rises, the position may move this many times the target's size; "
             "farther it is an approach while moving, not a push (0 = off)",

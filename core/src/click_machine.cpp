@@ -43,8 +43,10 @@ bool ClickMachine::release_all() noexcept {
 }
 
 ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, bool ready,
-                             cv::Point2d where, bool late, double raw, bool absorbed) noexcept {
+                             cv::Point2d where, bool late, double raw, bool absorbed,
+                             bool jumped) noexcept {
     now_ = timestamp;
+    jumped_ = jumped;
     where_ = where;
     late_ = late;
     // A step given back was the target's own (a push blurred for a frame), not a region change.
@@ -256,7 +258,10 @@ void ClickMachine::on_rising() noexcept {
         state_ = ClickState::idle;
         held_since_.reset();
         follow_baseline();
-    } else if (!carried && held(high)) {
+    } else if (!carried && held(high && !jumped_)) {
+        // Not on a frame whose centroid jumped, and the hold starts over after it: a push grows
+        // about a steady centroid, while a hand setting off on a swipe smears into a trail
+        // (+20-30% for a frame or two) and then jumps away.
         // Before the dip: at 10 fps a quick push's last frame in is also its first frame back.
         confirm();
     } else if (carried || dipped) {

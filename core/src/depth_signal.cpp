@@ -20,13 +20,15 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
     previous_time_ = timestamp;
     absorbed_ = false;
     given_back_ = false;
+    jumped_ = false;
     if (!scale || !(*scale > 0.0)) {
         reset();
         return std::nullopt;
     }
     const bool pending = pending_;
     pending_ = false;
-    if (pending && cv::norm(centroid - before_centroid_) < settings_.glitch_jump * before_scale_) {
+    if (pending &&
+        cv::norm(centroid - before_centroid_) <= (1.0 - settings_.glitch_return) * before_jump_) {
         gain_ = before_gain_;  // the centroid is back: whatever the size does now is the target's
         given_back_ = true;
     } else if (previous_ > 0.0 && settings_.glitch_jump > 0.0) {
@@ -39,11 +41,13 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         // by three times as much between frames at 10 fps (a quick push is 2-3 frames there).
         const double frames =
             std::max(1.0, static_cast<double>(timestamp - previous_time) / (1e6 / 30.0));
+        // At 10 fps a push's own centroid drifts three times as far between frames.
+        jumped_ = jump >= settings_.glitch_jump * frames;
         if (std::abs(step) >= settings_.glitch_step * frames && jump >= settings_.glitch_jump) {
             pending_ = true;
             before_centroid_ = previous_centroid_;
-            before_scale_ = previous_;
             before_gain_ = gain_;
+            before_jump_ = cv::norm(centroid - previous_centroid_);
             gain_ *= previous_ / *scale;
             absorbed_ = true;
         }

@@ -74,7 +74,7 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
                 depth_.update(has_target ? std::optional<double>(raw) : std::nullopt,
                               cv::Point2d(frame.centroid.x, frame.centroid.y / frame_aspect_), now);
             const ClickStep step = clicker_.step(now, scale, ready, where, depth_.given_back(), raw,
-                                                 depth_.absorbed());
+                                                 depth_.absorbed(), depth_.jumped());
             // x and y stay where the push began while a button is down or may yet be, and on
             // the frame a held push starts a drag, whose press goes where the push began.
             const bool hold = step.press || step.state == ClickState::pressed ||

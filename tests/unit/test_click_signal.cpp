@@ -168,6 +168,39 @@ TEST(DepthSignal, StepsWithoutACentroidJumpAndSmallStepsAreKept) {
     EXPECT_DOUBLE_EQ(*signal.update(0.4, here), 0.4);
 }
 
+TEST(DepthSignal, AStepIsGivenBackOnlyWhenTheCentroidComesMostOfTheWayBack) {
+    // glitch_return 0.7: the region takes in a piece, +35% with the centroid 0.15 of the size
+    // away; the next frame the centroid comes back half of that, the piece still in: the step
+    // stays out. Back 0.8 of the way, it was the target's own and is given back.
+    ClickSettings click = glitches().click;
+    click.glitch_return = 0.7;
+    const cv::Point2d here(0.5, 0.4);
+    DepthSignal settling(click);
+    EXPECT_DOUBLE_EQ(*settling.update(0.20, here), 0.20);
+    EXPECT_NEAR(*settling.update(0.27, here + cv::Point2d(0.03, 0)), 0.20, 1e-12);
+    EXPECT_TRUE(settling.absorbed());
+    EXPECT_NEAR(*settling.update(0.27, here + cv::Point2d(0.015, 0)), 0.20, 1e-12);
+    EXPECT_FALSE(settling.given_back());
+    DepthSignal blurred(click);
+    EXPECT_DOUBLE_EQ(*blurred.update(0.20, here), 0.20);
+    EXPECT_NEAR(*blurred.update(0.27, here + cv::Point2d(0.03, 0)), 0.20, 1e-12);
+    EXPECT_NEAR(*blurred.update(0.27, here + cv::Point2d(0.006, 0)), 0.27, 1e-12);
+    EXPECT_TRUE(blurred.given_back());
+}
+
+TEST(DepthSignal, ACentroidJumpCountsPerThirtiethOfASecond) {
+    // glitch_jump 0.1: 0.03 frame widths is 0.15 of a size of 0.2, a jump 1/30 s after the
+    // last frame; 0.1 s after it, three frames' worth of a push's own drift, it is not.
+    const cv::Point2d here(0.5, 0.4);
+    DepthSignal signal(glitches().click);
+    signal.update(0.20, here, 0);
+    signal.update(0.20, here + cv::Point2d(0.03, 0), 33'333);
+    EXPECT_TRUE(signal.jumped());
+    EXPECT_FALSE(signal.absorbed());  // the size kept still
+    signal.update(0.20, here + cv::Point2d(0.06, 0), 133'333);
+    EXPECT_FALSE(signal.jumped());
+}
+
 TEST(DepthSignal, OffPassesTheScaleThrough) {
     DepthSignal signal(depth().click);  // glitch_jump 0
     EXPECT_DOUBLE_EQ(*signal.update(0.20, {0.5, 0.4}), 0.20);
@@ -201,6 +234,34 @@ TEST(PushModel, AnApproachCarriedSidewaysIsNotAPush) {
         { 400,   T,       0.51, 0.5,  0.215,  "rising",     "rel -10 0"},
         { 500,   T,       0.515,0.5,  0.230,  "rising",     "rel -5 0"},
         { 600,   T,       0.515,0.5,  0.245,  "pressed",    "rel 15 0 +left"},  // undone
+    });
+    // clang-format on
+}
+
+TEST(PushModel, ARiseWhoseCentroidJumpsDoesNotPress) {
+    // press_hold_seconds 0.03 at 30 fps: a hand setting off on a swipe smears into a trail,
+    // +25% with the centroid still, then jumps away 0.24 of its size a frame. The frames that
+    // jump never hold the press. The same rise in place presses on its second frame.
+    PointerSettings settings = glitches();
+    settings.click.press_hold_seconds = 0.03;
+    PointerController pointer(settings, aspect);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 334,   T,       0.5,  0.5,  0.250,  "rising",     ""},           // +25%
+        { 367,   T,       0.56, 0.5,  0.250,  "rising",     "rel -60 0"},  // jumps: no press
+        { 400,   T,       0.62, 0.5,  0.250,  "rising",     "rel -60 0"},
+    });
+    PointerController still(settings, aspect);
+    play(still, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 334,   T,       0.5,  0.5,  0.250,  "rising",     ""},
+        { 367,   T,       0.5,  0.5,  0.250,  "pressed",    "+left"},
     });
     // clang-format on
 }

@@ -68,9 +68,10 @@ class ClickMachine {
     // gave back a step it had held for a frame), so push_seconds counts to that frame.
     // raw: sqrt(area) before the depth signal took steps out; 0: the same as scale.
     // absorbed: the depth signal took a step out on this frame (settle_seconds).
+    // jumped: the centroid jumped on this frame (DepthSignal::jumped): no press on it.
     ClickStep step(Timestamp timestamp, std::optional<double> scale, bool ready,
                    cv::Point2d where = {}, bool late = false, double raw = 0.0,
-                   bool absorbed = false) noexcept;
+                   bool absorbed = false, bool jumped = false) noexcept;
 
     // Pause, exit, signal: back to inactive. True when a button was down and must be released.
     bool release_all() noexcept;
@@ -144,6 +145,7 @@ class ClickMachine {
     double raw_ = 0.0;
     bool ready_ = false;
     bool late_ = false;
+    bool jumped_ = false;
     cv::Point2d where_;
     ClickStep result_;
 };

@@ -6,7 +6,8 @@
 // steps by 10-70% in one frame and the centroid jumps with it, and the new size may stay.
 // Such a step is absorbed: the signal keeps its previous value and follows the new level's
 // changes from there, so neither a one-frame glitch nor a step that stays reads as a push.
-// When the centroid is back where it was on the next frame, the step is given back: the size
+// When the centroid is back where it was on the next frame (glitch_return of the way), the
+// step is given back: the size
 // that stays up with the centroid back in place is a push whose frame blurred (at 10 fps a
 // push of 0.25 s is one frame), and a size back too was a one-frame glitch.
 // Pure: no allocation, no exceptions.
@@ -36,6 +37,9 @@ class DepthSignal {
     // Whether the last update gave back the step absorbed on the frame before: the size
     // changed then, not now.
     bool given_back() const noexcept { return given_back_; }
+    // Whether the centroid jumped on the last update by glitch_jump of the size (per 1/30 s),
+    // whatever the size did: the region changing shape, or the target setting off sideways.
+    bool jumped() const noexcept { return jumped_; }
     void reset() noexcept;
 
   private:
@@ -49,10 +53,11 @@ class DepthSignal {
     // frame, at 10 fps a push's own frame) and the step is given back.
     bool pending_ = false;
     cv::Point2d before_centroid_;
-    double before_scale_ = 0.0;
     double before_gain_ = 1.0;
+    double before_jump_ = 0.0;  // the centroid's jump with the step, frame widths
     bool absorbed_ = false;
     bool given_back_ = false;
+    bool jumped_ = false;
 };
 
 }  // namespace raypoint::core

@@ -88,6 +88,11 @@ struct ClickSettings {
     // 81.7% / 78.3% to 83.3% / 80.0% at seeds 1 / 2, nothing else changed).
     double glitch_step = 0.08;
     double glitch_jump = 0.10;
+    // A step absorbed is given back on the next frame when the centroid has come back at least
+    // this share of its jump: a push whose frame blurred. A region that took in a piece and
+    // keeps it moves its centroid back a little as the piece settles; 0.7 keeps that step out
+    // (docs/clicks.md). 1: the centroid exactly back; 0: every step given back.
+    double glitch_return = 0.7;
     // A push must not carry the target sideways: while rising, the smoothed position may move
     // at most this many times the target's size (sqrt(area)) from where the push began;
     // farther, it is an approach while moving, not a push. 0: off.
