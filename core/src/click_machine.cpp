@@ -247,9 +247,12 @@ void ClickMachine::on_rising() noexcept {
     // The rise must reach press_rise within push_seconds; holding it there may take longer.
     const bool high = rise_ >= settings_.press_rise && (in_time || held_since_);
     // A push brings the target closer where it is; an approach while moving sideways (the
-    // hand wandering, walking in at an angle) carries it along.
-    const bool carried = settings_.push_travel > 0.0 &&
-                         cv::norm(where_ - push_from_) > settings_.push_travel * baseline_;
+    // hand wandering, walking in at an angle) carries it along. Against the target's own size
+    // where the push began: the baseline is on the depth signal's scale, which every step it
+    // took out has shrunk (to a third of the size on some clips), and with it the travel.
+    const double size = push_raw_ > 0.0 ? push_raw_ : baseline_;
+    const bool carried =
+        settings_.push_travel > 0.0 && cv::norm(where_ - push_from_) > settings_.push_travel * size;
     // A push grows frame after frame; the bob of a step or a wobble goes up and down.
     push_peak_ = std::max(push_peak_, scale_);
     const bool dipped =

@@ -238,6 +238,28 @@ TEST(PushModel, AnApproachCarriedSidewaysIsNotAPush) {
     // clang-format on
 }
 
+TEST(PushModel, TheTravelIsAgainstTheTargetsOwnSize) {
+    // push_travel 0.1 after a step the signal took out: the target's size is 0.27, the signal's
+    // 0.2. A push that moves the position 0.025 frame widths is within 0.1 of the target's size
+    // (0.027) and presses; against the signal's (0.02) it would be an approach.
+    PointerSettings settings = glitches();
+    settings.click.push_travel = 0.1;
+    PointerController pointer(settings, aspect);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.56, 0.5,  0.270,  "idle",       "rel -60 0"},  // absorbed
+        { 500,   T,       0.56, 0.5,  0.270,  "idle",       ""},
+        { 600,   T,       0.56, 0.5,  0.270,  "idle",       ""},
+        { 700,   T,       0.585,0.5,  0.310,  "rising",     "rel -25 0"},  // +15%
+        { 800,   T,       0.585,0.5,  0.340,  "pressed",    "rel 25 0 +left"},
+    });
+    // clang-format on
+}
+
 TEST(PushModel, ARiseWhoseCentroidJumpsDoesNotPress) {
     // press_hold_seconds 0.03 at 30 fps: a hand setting off on a swipe smears into a trail,
     // +25% with the centroid still, then jumps away 0.24 of its size a frame. The frames that

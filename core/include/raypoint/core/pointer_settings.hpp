@@ -94,9 +94,9 @@ struct ClickSettings {
     // (docs/clicks.md). 1: the centroid exactly back; 0: every step given back.
     double glitch_return = 0.7;
     // A push must not carry the target sideways: while rising, the smoothed position may move
-    // at most this many times the target's size (sqrt(area)) from where the push began;
-    // farther, it is an approach while moving, not a push. 0: off.
-    double push_travel = 0.1;
+    // at most this many times the target's size (sqrt(area), raw, where the push began) from
+    // where the push began; farther, it is an approach while moving, not a push. 0: off.
+    double push_travel = 0.06;
     // A push grows on every frame: while rising, sqrt(area) may fall at most this far
     // (relative) under its largest since the push began; farther, the rise was the bob of a
     // step or a wobble, not a push. 0: off.
