@@ -36,7 +36,8 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         // The centroid's jump in units of the target's size: a push about a steady centroid
         // moves it little (the gesture set's pushes: a median 0.01 of the size a frame), a
         // region that takes in or drops a piece moves it by about the piece's share.
-        const double jump = cv::norm(centroid - previous_centroid_) / previous_;
+        const double moved = cv::norm(centroid - previous_centroid_);  // frame widths
+        const double jump = moved / previous_;
         // glitch_step is a step between frames 1/30 s apart: a push brings the target closer
         // by three times as much between frames at 10 fps (a quick push is 2-3 frames there).
         const double frames =
@@ -47,7 +48,7 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
             pending_ = true;
             before_centroid_ = previous_centroid_;
             before_gain_ = gain_;
-            before_jump_ = cv::norm(centroid - previous_centroid_);
+            before_jump_ = moved;
             gain_ *= previous_ / *scale;
             absorbed_ = true;
         }

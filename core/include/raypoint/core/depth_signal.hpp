@@ -7,9 +7,9 @@
 // Such a step is absorbed: the signal keeps its previous value and follows the new level's
 // changes from there, so neither a one-frame glitch nor a step that stays reads as a push.
 // When the centroid is back where it was on the next frame (glitch_return of the way), the
-// step is given back: the size
-// that stays up with the centroid back in place is a push whose frame blurred (at 10 fps a
-// push of 0.25 s is one frame), and a size back too was a one-frame glitch.
+// step is given back: the size that stays up with the centroid back in place is a push whose
+// frame blurred (at 10 fps a push of 0.25 s is one frame), and a size back too was a one-frame
+// glitch.
 // Pure: no allocation, no exceptions.
 
 #include <optional>
