@@ -211,6 +211,11 @@ bool ClickMachine::pulled_back() noexcept {
     return held(rise_ <= settings_.release_rise || dropped || back);
 }
 
+bool ClickMachine::settling() const noexcept {
+    return absorbed_at_ && settings_.settle_seconds > 0.0 &&
+           seconds_since(*absorbed_at_) <= settings_.settle_seconds;
+}
+
 void ClickMachine::on_inactive() noexcept {
     // The baseline is wherever the target is until clicks are allowed: a target that entered
     // the view growing starts from its size at that moment, not from a stale average.
@@ -222,8 +227,7 @@ void ClickMachine::on_inactive() noexcept {
 void ClickMachine::on_idle() noexcept {
     // The region is still changing after a step the depth signal took out: its growth is the
     // region taking in more, not a push. Never down: a flicker's return would be a rise.
-    if (absorbed_at_ && settings_.settle_seconds > 0.0 &&
-        seconds_since(*absorbed_at_) <= settings_.settle_seconds) {
+    if (settling()) {
         baseline_ = std::max(baseline_, scale_);
         return;
     }
@@ -326,6 +330,9 @@ void ClickMachine::on_holding() noexcept {
 }
 
 bool ClickMachine::moved_while_held() noexcept {
+    // A step the depth signal took out moved the centroid with the region, and the smoothed
+    // position follows it for settle_seconds: the hold counts from where that left it.
+    if (settling()) held_at_ = where_;
     const cv::Point2d moved = where_ - held_at_;
     if (cv::norm(moved) <= settings_.hold_radius) return false;
     if (settings_.scroll_gain > 0.0 && std::abs(moved.y) > std::abs(moved.x)) {
