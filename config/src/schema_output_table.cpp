@@ -169,6 +169,11 @@ std::vector<Key> output_keys() {
             "frame widths a held push may move before it drags or scrolls (right_seconds or "
             "scroll_gain on)",
             [](auto& c) -> auto& { return c.core.pointer.click.hold_radius; }),
+        real_key(
+            "click", "hold_settle_seconds", 0.0, 10.0,
+            "for this many seconds after a step of the region taken out of the depth signal, "
+            "a held push's hold counts from where the position is (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.hold_settle_seconds; }),
         // [dwell] click.mode = dwell
         real_key(
             "dwell", "seconds", 0.0, 60.0, "the cursor held still this many seconds clicks",

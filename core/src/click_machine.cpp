@@ -331,8 +331,11 @@ void ClickMachine::on_holding() noexcept {
 
 bool ClickMachine::moved_while_held() noexcept {
     // A step the depth signal took out moved the centroid with the region, and the smoothed
-    // position follows it for settle_seconds: the hold counts from where that left it.
-    if (settling()) held_at_ = where_;
+    // position follows it for several frames: the hold counts from where that left it.
+    if (absorbed_at_ && settings_.hold_settle_seconds > 0.0 &&
+        seconds_since(*absorbed_at_) <= settings_.hold_settle_seconds) {
+        held_at_ = where_;
+    }
     const cv::Point2d moved = where_ - held_at_;
     if (cv::norm(moved) <= settings_.hold_radius) return false;
     if (settings_.scroll_gain > 0.0 && std::abs(moved.y) > std::abs(moved.x)) {

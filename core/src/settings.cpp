@@ -40,6 +40,7 @@ Settings paper_settings() {
     click.drag_seconds = 0.8;
     click.baseline_seconds = 1.0;
     click.settle_seconds = 0.0;
+    click.hold_settle_seconds = 0.0;
     return settings;
 }
 

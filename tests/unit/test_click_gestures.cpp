@@ -358,13 +358,13 @@ TEST(ClickGestures, ARegionFlickerAtTheTopOfAHeldPushDoesNotRelease) {
 }
 
 TEST(ClickGestures, ARegionThatTakesInAPieceWhileHeldDoesNotScroll) {
-    // settle_seconds 0.2: the held push's region takes in a piece below the hand (+38%, the
+    // hold_settle_seconds 0.2: the held push's region takes in a piece below the hand (+38%, the
     // centroid 0.03 frame widths down: taken out), and the smoothed position goes on following
     // it down for two frames, 0.06 frame widths in all, past the hold radius of 0.05. The
     // hold counts from where the step left the position: no scroll, and the right click comes
     // at the pull-back.
     PointerSettings s = gestures_with_glitches();
-    s.click.settle_seconds = 0.2;
+    s.click.hold_settle_seconds = 0.2;
     PointerController pointer(s, aspect);
     hold_a_push(pointer);
     // clang-format off

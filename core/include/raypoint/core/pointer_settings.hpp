@@ -142,6 +142,13 @@ struct ClickSettings {
     // held right clicks for scrolls and drags (56.7% and 76.7% recognised at seeds 1 and 2),
     // 0.035 71.7% and 86.7%, 0.05 no better.
     double hold_radius = 0.035;
+    // For this long after a step the depth signal took out, a held push's hold counts from
+    // where the position is: the region's centroid jumped with the step, and the smoothed
+    // position follows it for several frames (output.ema_weight 0.9 a frame: a quarter of the
+    // way in 0.1 s at 30 fps). On the gesture set 0.1 s: right clicks 257 to 259 of 300, 0.3 s:
+    // 262, and left clicks taken for another gesture 34 to 26 of 1650; 0.5 s lost scrolls
+    // (docs/clicks.md). 0: off.
+    double hold_settle_seconds = 0.3;
 };
 
 // [dwell], click.mode = dwell.
