@@ -211,9 +211,8 @@ bool ClickMachine::pulled_back() noexcept {
     return held(rise_ <= settings_.release_rise || dropped || back);
 }
 
-bool ClickMachine::settling() const noexcept {
-    return absorbed_at_ && settings_.settle_seconds > 0.0 &&
-           seconds_since(*absorbed_at_) <= settings_.settle_seconds;
+bool ClickMachine::within_step(double seconds) const noexcept {
+    return absorbed_at_ && seconds > 0.0 && seconds_since(*absorbed_at_) <= seconds;
 }
 
 void ClickMachine::on_inactive() noexcept {
@@ -227,7 +226,7 @@ void ClickMachine::on_inactive() noexcept {
 void ClickMachine::on_idle() noexcept {
     // The region is still changing after a step the depth signal took out: its growth is the
     // region taking in more, not a push. Never down: a flicker's return would be a rise.
-    if (settling()) {
+    if (within_step(settings_.settle_seconds)) {
         baseline_ = std::max(baseline_, scale_);
         return;
     }
@@ -332,10 +331,7 @@ void ClickMachine::on_holding() noexcept {
 bool ClickMachine::moved_while_held() noexcept {
     // A step the depth signal took out moved the centroid with the region, and the smoothed
     // position follows it for several frames: the hold counts from where that left it.
-    if (absorbed_at_ && settings_.hold_settle_seconds > 0.0 &&
-        seconds_since(*absorbed_at_) <= settings_.hold_settle_seconds) {
-        held_at_ = where_;
-    }
+    if (within_step(settings_.hold_settle_seconds)) held_at_ = where_;
     const cv::Point2d moved = where_ - held_at_;
     if (cv::norm(moved) <= settings_.hold_radius) return false;
     if (settings_.scroll_gain > 0.0 && std::abs(moved.y) > std::abs(moved.x)) {

@@ -108,8 +108,8 @@ class ClickMachine {
     bool held(bool condition) noexcept;
     void release() noexcept;
     bool pulled_back() noexcept;  // PRESSED, DRAGGING: the release's condition
-    // For settle_seconds after a step the depth signal took out: the region is still changing.
-    bool settling() const noexcept;
+    // Whether a step the depth signal took out came within `seconds` (0: never).
+    bool within_step(double seconds) const noexcept;
 
     ClickSettings settings_;
     ClickState state_ = ClickState::inactive;
