@@ -298,9 +298,16 @@ void ClickMachine::on_dragging() noexcept {
 }
 
 void ClickMachine::on_refractory() noexcept {
+    // The target's own size back where the push began has settled too, where the depth signal
+    // took a step of the pull-back out and stays up (the rule of pulled_back()): the baseline
+    // starts again from the signal, or the signal's leftover step would hold the next push off
+    // (the second push of a double click) or press by itself.
+    const bool back = settings_.glitch_jump > 0.0 && push_raw_ > 0.0 &&
+                      raw_ <= push_raw_ * (1.0 + settings_.start_rise);
     if (seconds_since(released_at_) >= settings_.refractory_seconds &&
-        rise_ <= settings_.start_rise) {
+        (rise_ <= settings_.start_rise || back)) {
         state_ = ClickState::idle;
+        if (rise_ > settings_.start_rise) baseline_ = scale_;
     }
     follow_baseline();
 }

@@ -254,6 +254,30 @@ TEST(ClickGestures, ADragIsNotTheFirstClickOfADouble) {
     // clang-format on
 }
 
+TEST(ClickGestures, APullBackTakenOutDoesNotHoldOffTheSecondPushOfADouble) {
+    // The first click's pull-back ends with a step the depth signal takes out (-27%, the
+    // centroid 0.13 of the size away), and the signal stays at 0.225, 12.5% over the baseline.
+    // The target's own size is back where the push began: the refractory time ends at 0.3 s
+    // and the baseline starts again from the signal, so the second push double-clicks.
+    PointerSettings s = double_only();
+    s.click.glitch_jump = 0.1;
+    s.click.release_drop = 0.25;
+    PointerController pointer(s, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.260,  "pressed",       "+left"},
+        { 500,   T,       0.500, 0.500, 0.225,  "pressed",       ""},
+        { 600,   T,       0.530, 0.500, 0.165,  "refractory",    "rel -30 0 -left"},
+        { 700,   T,       0.530, 0.500, 0.165,  "refractory",    ""},
+        { 900,   T,       0.530, 0.500, 0.165,  "idle",          ""},
+        {1000,   T,       0.530, 0.500, 0.215,  "pressed",       "+left -left +left"},
+    });
+    // clang-format on
+}
+
 TEST(ClickGestures, DoubleClickWithRightClickOnComesAtTheSecondPullBack) {
     PointerController pointer(gestures(), aspect);
     // clang-format off
