@@ -170,6 +170,11 @@ std::vector<Key> output_keys() {
             "scroll_gain on)",
             [](auto& c) -> auto& { return c.core.pointer.click.hold_radius; }),
         real_key(
+            "click", "hold_rise", 0.0, 1.0,
+            "a held push whose sqrt(area) changes by less than this (relative) is still: "
+            "right_seconds counts while it is",
+            [](auto& c) -> auto& { return c.core.pointer.click.hold_rise; }),
+        real_key(
             "click", "hold_settle_seconds", 0.0, 10.0,
             "for this many seconds after a step of the region taken out of the depth signal, "
             "a held push's hold counts from where the position is (0 = off)",

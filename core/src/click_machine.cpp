@@ -320,8 +320,8 @@ void ClickMachine::on_holding() noexcept {
     }
     if (moved_while_held()) return;
     // Still in size too: a slow push still growing, or one that already comes back, is not a
-    // held push (start_rise is the rise that tells a push from noise).
-    if (std::abs(scale_ / still_scale_ - 1.0) > settings_.start_rise) {
+    // held push.
+    if (std::abs(scale_ / still_scale_ - 1.0) > settings_.hold_rise) {
         still_scale_ = scale_;
         still_since_ = now_;
     }

@@ -41,6 +41,7 @@ Settings paper_settings() {
     click.baseline_seconds = 1.0;
     click.settle_seconds = 0.0;
     click.hold_settle_seconds = 0.0;
+    click.hold_rise = 0.05;
     return settings;
 }
 

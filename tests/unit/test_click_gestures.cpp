@@ -93,7 +93,7 @@ TEST(ClickGestures, AQuickPushClicksWhenPulledBack) {
 TEST(ClickGestures, ASlowLeftClickIsNotARightClick) {
     // Pressed 0.3 s in, still growing for 0.4 s, held 0.2 s, pulled back over 0.4 s: 1 s from
     // the press to the release, but never still for 0.5 s (the size changes by more than
-    // start_rise within each 0.5 s): a left click.
+    // hold_rise within each 0.5 s): a left click.
     PointerController pointer(gestures(), aspect);
     // clang-format off
     play(pointer, {
@@ -115,6 +115,40 @@ TEST(ClickGestures, ASlowLeftClickIsNotARightClick) {
         {1600,   T,       0.500, 0.500, 0.215,  "refractory",    "+left -left"},
     });
     // clang-format on
+}
+
+TEST(ClickGestures, ASlowClicksRoundedTopIsNotStill) {
+    // A push easing in and out: its top stays within 5% of where HOLDING began for 0.5 s, but
+    // not within hold_rise (0.03), so the pull-back left-clicks. With the band at 0.05 (the
+    // paper preset's) the same push is held still for right_seconds and right-clicks.
+    // clang-format off
+    const std::vector<test::PointerRow> top = {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.225,  "rising",        ""},
+        { 500,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        { 600,   T,       0.500, 0.500, 0.256,  "holding",       ""},
+        { 700,   T,       0.500, 0.500, 0.260,  "holding",       ""},   // +4%: restarts
+        { 800,   T,       0.500, 0.500, 0.262,  "holding",       ""},
+        { 900,   T,       0.500, 0.500, 0.260,  "holding",       ""},
+        {1000,   T,       0.500, 0.500, 0.256,  "holding",       ""},
+        {1100,   T,       0.500, 0.500, 0.250,  "holding",       ""},   // -3.8%: restarts
+        {1200,   T,       0.500, 0.500, 0.240,  "holding",       ""},
+        {1300,   T,       0.500, 0.500, 0.220,  "refractory",    "+left -left"},
+    };
+    // clang-format on
+    PointerController pointer(gestures(), aspect);
+    play(pointer, top);
+    PointerSettings wide = gestures();
+    wide.click.hold_rise = 0.05;
+    PointerController widely(wide, aspect);
+    std::vector<test::PointerRow> armed = top;
+    armed[9].click = "right_armed";  // 0.5 s within 5% of 0.250
+    armed[10].click = "right_armed";
+    armed[11].click = "right_armed";
+    armed[12].out = "+right -right";
+    play(widely, armed);
 }
 
 TEST(ClickGestures, AHeldPushMovingSidewaysDrags) {
