@@ -139,12 +139,22 @@ Timestamp ClickMachine::crossed(double level) const noexcept {
     return last_frame_ + static_cast<Timestamp>(fraction * static_cast<double>(now_ - last_frame_));
 }
 
-bool ClickMachine::held(bool condition) noexcept {
+// At 10 fps the frame that first shows press_rise comes up to 0.1 s after the rise crossed it,
+// and counting press_hold_seconds from that frame waited for the next one: 0.1 s of latency for
+// a 0.03 s hold. Only for a rise already under way on the previous frame: a single frame that
+// jumps from the baseline (a glitch) still has to be held.
+Timestamp ClickMachine::press_crossed() const noexcept {
+    if (now_ <= rising_at_ || !(baseline_ > 0.0)) return now_;
+    if (last_scale_ / baseline_ - 1.0 >= settings_.press_rise) return now_;
+    return crossed(settings_.press_rise);
+}
+
+bool ClickMachine::held(bool condition, Timestamp since) noexcept {
     if (!condition) {
         held_since_.reset();
         return false;
     }
-    if (!held_since_) held_since_ = now_;
+    if (!held_since_) held_since_ = since;
     return seconds_since(*held_since_) >= settings_.press_hold_seconds;
 }
 
@@ -208,7 +218,7 @@ bool ClickMachine::pulled_back() noexcept {
     const bool back = settings_.glitch_jump > 0.0 && push_raw_ > 0.0 &&
                       raw_ <= push_raw_ * (1.0 + settings_.release_rise) &&
                       scale_ <= peak_ * (1.0 - settings_.release_drop / 2.0);
-    return held(rise_ <= settings_.release_rise || dropped || back);
+    return held(rise_ <= settings_.release_rise || dropped || back, now_);
 }
 
 bool ClickMachine::within_step(double seconds) const noexcept {
@@ -232,6 +242,7 @@ void ClickMachine::on_idle() noexcept {
     }
     if (rise_ > settings_.start_rise) {
         push_began_ = crossed(settings_.start_rise);
+        rising_at_ = now_;
         push_from_ = last_where_;
         push_raw_ = last_raw_;
         push_peak_ = 0.0;
@@ -264,7 +275,7 @@ void ClickMachine::on_rising() noexcept {
         state_ = ClickState::idle;
         held_since_.reset();
         follow_baseline();
-    } else if (!carried && held(high && !jumped_)) {
+    } else if (!carried && held(high && !jumped_, press_crossed())) {
         // Not on a frame whose centroid jumped, and the hold starts over after it: a push grows
         // about a steady centroid, while a hand setting off on a swipe smears into a trail
         // (+20-30% for a frame or two) and then jumps away.

@@ -76,6 +76,24 @@ TEST(ClickMachine, OneFrameOfAreaNeitherPressesNorReleases) {
     // clang-format on
 }
 
+TEST(ClickMachine, TheHoldCountsFromWhereARiseUnderWayCrossedThePress) {
+    // press_hold_seconds 0.05 at 10 fps: the rise, 10% at 400 ms and 35% at 500, crossed 20% at
+    // 440 (linearly between the frames), so it has been at the press for 0.06 s on the frame
+    // that shows it. Counting from that frame waited for the next, 0.1 s later. The rise of
+    // OneFrameOfAreaNeitherPressesNorReleases crosses 17 ms before its frame: held there.
+    PointerController pointer(held_depth(), aspect);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.5,  0.220,  "rising",     ""},       // +10%
+        { 500,   T,       0.5,  0.5,  0.270,  "pressed",    "+left"},  // +35%
+    });
+    // clang-format on
+}
+
 TEST(ClickMachine, PullingBackFromADragThatGrewTheTargetReleases) {
     // The drag carried the target where it looks bigger: pulled back, its size is still 15% over
     // the old baseline (over release_rise), but 30% under its largest while down.

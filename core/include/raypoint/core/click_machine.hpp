@@ -104,8 +104,12 @@ class ClickMachine {
     // scale); the previous frame's time when the rise was there already, this frame's when it
     // is not there yet.
     Timestamp crossed(double level) const noexcept;
-    // Whether `condition` has held for press_hold_seconds up to this frame.
-    bool held(bool condition) noexcept;
+    // Whether `condition` has held for press_hold_seconds up to this frame, counting from
+    // `since` (no later than now) when it begins to hold on this frame.
+    bool held(bool condition, Timestamp since) noexcept;
+    // RISING: when the rise crossed press_rise, placed between this frame and the previous one
+    // when the push was under way on that frame already; this frame's time otherwise.
+    Timestamp press_crossed() const noexcept;
     void release() noexcept;
     bool pulled_back() noexcept;  // PRESSED, DRAGGING: the release's condition
     // Whether a step the depth signal took out came within `seconds` (0: never).
@@ -117,7 +121,8 @@ class ClickMachine {
     double rise_ = 0.0;
     Timestamp last_frame_ = 0;  // the previous frame with a target
     Timestamp push_began_ = 0;
-    cv::Point2d push_from_;  // where the push began: the position of the frame before RISING
+    Timestamp rising_at_ = 0;  // the frame that entered RISING
+    cv::Point2d push_from_;    // where the push began: the position of the frame before RISING
     cv::Point2d last_where_;
     double last_raw_ = 0.0;    // the previous frame's raw scale
     double last_scale_ = 0.0;  // the previous frame's scale (the depth signal); 0: none
