@@ -218,7 +218,23 @@ bool ClickMachine::pulled_back() noexcept {
     const bool back = settings_.glitch_jump > 0.0 && push_raw_ > 0.0 &&
                       raw_ <= push_raw_ * (1.0 + settings_.release_rise) &&
                       scale_ <= peak_ * (1.0 - settings_.release_drop / 2.0);
-    return held(rise_ <= settings_.release_rise || dropped || back, now_);
+    return held(rise_ <= settings_.release_rise || dropped || back, release_crossed());
+}
+
+// As press_crossed(), for the pull-back: at 10 fps the release waited a frame for its hold, and a
+// double click's second push came inside the first one's refractory time. Where the previous
+// frame was at least halfway down from the largest size to the release's level: a held push
+// that dips for one frame (the region dropping a piece) is held from that frame as before.
+Timestamp ClickMachine::release_crossed() const noexcept {
+    if (!(last_scale_ > 0.0) || now_ <= last_frame_) return now_;
+    double level = baseline_ * (1.0 + settings_.release_rise);
+    if (settings_.release_drop > 0.0) {
+        level = std::max(level, peak_ * (1.0 - settings_.release_drop));
+    }
+    if (!(last_scale_ > level) || scale_ > level) return now_;
+    if (last_scale_ > level + 0.5 * (peak_ - level)) return now_;
+    const double fraction = (last_scale_ - level) / (last_scale_ - scale_);
+    return last_frame_ + static_cast<Timestamp>(fraction * static_cast<double>(now_ - last_frame_));
 }
 
 bool ClickMachine::within_step(double seconds) const noexcept {

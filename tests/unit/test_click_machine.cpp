@@ -94,6 +94,28 @@ TEST(ClickMachine, TheHoldCountsFromWhereARiseUnderWayCrossedThePress) {
     // clang-format on
 }
 
+TEST(ClickMachine, TheReleaseHoldCountsFromWhereAPullBackUnderWayCrossedIt) {
+    // press_hold_seconds 0.05 at 10 fps: the pull-back is at 0.235 at 700 ms (under halfway
+    // from the largest size, 0.270, to the release's level, 0.220) and at 0.205 at 800: it
+    // crossed 0.220 at 750, and the release comes at 800, not at the next frame. A single frame
+    // down from the top of a held push is held from its own frame
+    // (OneFrameOfAreaNeitherPressesNorReleases).
+    PointerController pointer(held_depth(), aspect);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.5,  0.215,  "rising",     ""},
+        { 500,   T,       0.5,  0.5,  0.270,  "pressed",    "+left"},
+        { 600,   T,       0.5,  0.5,  0.270,  "pressed",    ""},
+        { 700,   T,       0.5,  0.5,  0.235,  "pressed",    ""},       // +17.5%
+        { 800,   T,       0.5,  0.5,  0.205,  "refractory", "-left"},  // +2.5%
+    });
+    // clang-format on
+}
+
 TEST(ClickMachine, PullingBackFromADragThatGrewTheTargetReleases) {
     // The drag carried the target where it looks bigger: pulled back, its size is still 15% over
     // the old baseline (over release_rise), but 30% under its largest while down.

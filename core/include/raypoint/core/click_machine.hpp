@@ -110,6 +110,11 @@ class ClickMachine {
     // RISING: when the rise crossed press_rise, placed between this frame and the previous one
     // when the push was under way on that frame already; this frame's time otherwise.
     Timestamp press_crossed() const noexcept;
+    // PRESSED, DRAGGING, HOLDING, RIGHT_ARMED, SCROLLING: when the signal came down through the
+    // release's level (release_rise over the baseline, or release_drop under the largest size),
+    // placed between the frames, when the pull-back was under way on the previous frame; this
+    // frame's time otherwise.
+    Timestamp release_crossed() const noexcept;
     void release() noexcept;
     bool pulled_back() noexcept;  // PRESSED, DRAGGING: the release's condition
     // Whether a step the depth signal took out came within `seconds` (0: never).
