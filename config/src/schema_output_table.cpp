@@ -106,6 +106,11 @@ std::vector<Key> output_keys() {
             "down (0.25 = 25%; 0 = off): a drag that changed the size still releases",
             [](auto& c) -> auto& { return c.core.pointer.click.release_drop; }),
         real_key(
+            "click", "release_share", 0.0, 1.0,
+            "the button also comes up when the rise has come back to this share of its largest "
+            "since the press (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.release_share; }),
+        real_key(
             "click", "glitch_step", 0.0, 5.0,
             "a one-frame change of sqrt(area) this large (relative) that comes with a "
             "centroid jump of glitch_jump is the tracker's region changing: taken out of the "

@@ -218,7 +218,11 @@ bool ClickMachine::pulled_back() noexcept {
     const bool back = settings_.glitch_jump > 0.0 && push_raw_ > 0.0 &&
                       raw_ <= push_raw_ * (1.0 + settings_.release_rise) &&
                       scale_ <= peak_ * (1.0 - settings_.release_drop / 2.0);
-    return held(rise_ <= settings_.release_rise || dropped || back, release_crossed());
+    // Most of the push's rise gone: after a drag to where the target looks bigger, neither
+    // release_rise nor release_drop may be reached.
+    const bool share = settings_.release_share > 0.0 && baseline_ > 0.0 &&
+                       rise_ <= settings_.release_share * (peak_ / baseline_ - 1.0);
+    return held(rise_ <= settings_.release_rise || dropped || back || share, release_crossed());
 }
 
 // As press_crossed(), for the pull-back: at 10 fps the release waited a frame for its hold, and a
@@ -230,6 +234,9 @@ Timestamp ClickMachine::release_crossed() const noexcept {
     double level = baseline_ * (1.0 + settings_.release_rise);
     if (settings_.release_drop > 0.0) {
         level = std::max(level, peak_ * (1.0 - settings_.release_drop));
+    }
+    if (settings_.release_share > 0.0) {
+        level = std::max(level, baseline_ + settings_.release_share * (peak_ - baseline_));
     }
     if (!(last_scale_ > level) || scale_ > level) return now_;
     if (last_scale_ > level + 0.5 * (peak_ - level)) return now_;

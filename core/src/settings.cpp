@@ -33,6 +33,7 @@ Settings paper_settings() {
     click.push_seconds = 0.25;
     click.press_hold_seconds = 0.0;
     click.release_drop = 0.0;
+    click.release_share = 0.0;
     click.glitch_jump = 0.0;
     click.push_travel = 0.0;
     click.push_dip = 0.0;

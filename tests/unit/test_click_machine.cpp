@@ -137,6 +137,34 @@ TEST(ClickMachine, PullingBackFromADragThatGrewTheTargetReleases) {
     // clang-format on
 }
 
+TEST(ClickMachine, ADragWhoseRiseIsMostlyGoneReleases) {
+    // release_share 0.33: the drag carried the target where it looks 12.5% bigger; pulled back,
+    // that is over release_rise (10%) and only 20% under the largest size (release_drop 25%),
+    // but under a third of the largest rise (40%): released. Without it the drag stays down.
+    PointerSettings settings = depth();
+    settings.click.release_drop = 0.25;
+    settings.click.release_share = 0.33;
+    // clang-format off
+    const std::vector<test::PointerRow> drag = {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.5,  0.280,  "pressed",    "+left"},  // +40%
+        {1200,   T,       0.5,  0.5,  0.280,  "dragging",   ""},
+        {1300,   T,       0.5,  0.5,  0.240,  "dragging",   ""},       // +20%
+        {1400,   T,       0.5,  0.5,  0.225,  "refractory", "-left"},  // +12.5%
+    };
+    // clang-format on
+    PointerController sharing(settings, aspect);
+    play(sharing, drag);
+    settings.click.release_share = 0.0;
+    PointerController stuck(settings, aspect);
+    std::vector<test::PointerRow> held = drag;
+    held[6].click = "dragging";
+    held[6].out = "";
+    play(stuck, held);
+}
+
 TEST(ClickMachine, AHeldRiseReachedInTimePressesAfterPushSeconds) {
     // The rise reaches the press 0.3 s in (within push_seconds, 0.35 s); holding it there ends
     // at 0.4 s, after push_seconds: still a press.

@@ -111,7 +111,8 @@ class ClickMachine {
     // when the push was under way on that frame already; this frame's time otherwise.
     Timestamp press_crossed() const noexcept;
     // PRESSED, DRAGGING, HOLDING, RIGHT_ARMED, SCROLLING: when the signal came down through the
-    // release's level (release_rise over the baseline, or release_drop under the largest size),
+    // release's level (release_rise over the baseline, release_drop under the largest size, or
+    // release_share of the largest rise),
     // placed between the frames, when the pull-back was under way on the previous frame; this
     // frame's time otherwise.
     Timestamp release_crossed() const noexcept;

@@ -79,6 +79,13 @@ struct ClickSettings {
     // so after a drag the size it returns to may stay over release_rise of the old baseline.
     // 0: off. 0.25: the gesture set's drags no longer stick (docs/clicks.md).
     double release_drop = 0.25;
+    // And when the rise has come back to this share of its largest since the press, held
+    // press_hold_seconds: a drag that carried the target where it looks 5-10% bigger, and a
+    // region flickering between two shapes, came back 20% from the peak, under release_drop,
+    // and the drag stuck through the next gestures. On the gesture set, seeds 1-5: target
+    // pushes 830 to 833 of 891, clicks recalled 904 to 918, false clicks the same
+    // (docs/clicks.md). 0: off.
+    double release_share = 0.33;
     // The depth signal (depth_signal.hpp): a step of sqrt(area) of at least glitch_step
     // (relative) in one frame that comes with a centroid jump of at least glitch_jump of the
     // target's size is the tracker's region changing, not the target coming closer, and is
