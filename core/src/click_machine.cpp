@@ -135,7 +135,10 @@ Timestamp ClickMachine::crossed(double level) const noexcept {
     const double before = last_scale_ / baseline_ - 1.0;
     if (before >= level) return last_frame_;  // there already (the baseline moved since)
     if (rise_ < level) return now_;
-    const double fraction = (level - before) / (rise_ - before);
+    return between_frames((level - before) / (rise_ - before));
+}
+
+Timestamp ClickMachine::between_frames(double fraction) const noexcept {
     return last_frame_ + static_cast<Timestamp>(fraction * static_cast<double>(now_ - last_frame_));
 }
 
@@ -156,24 +159,6 @@ bool ClickMachine::held(bool condition, Timestamp since) noexcept {
     }
     if (!held_since_) held_since_ = since;
     return seconds_since(*held_since_) >= settings_.press_hold_seconds;
-}
-
-void ClickMachine::release() noexcept {
-    // Only a click (not a drag, not the second of a double) can be the first of a double.
-    if (state_ == ClickState::pressed || state_ == ClickState::holding) {
-        if (!result_.double_click && !doubled_) {
-            clicked_at_ = now_;
-        } else {
-            clicked_at_.reset();
-        }
-    } else {
-        clicked_at_.reset();
-    }
-    result_.release = state_ == ClickState::pressed || state_ == ClickState::dragging ||
-                      state_ == ClickState::holding;
-    state_ = ClickState::refractory;
-    released_at_ = now_;
-    held_since_.reset();
 }
 
 void ClickMachine::confirm() noexcept {
@@ -202,46 +187,6 @@ void ClickMachine::press_left() noexcept {
         settings_.double_seconds > 0.0 && clicked_at_ &&
         static_cast<double>(push_began_ - *clicked_at_) / 1e6 <= settings_.double_seconds;
     doubled_ = result_.double_click;
-}
-
-bool ClickMachine::pulled_back() noexcept {
-    peak_ = std::max(peak_, scale_);
-    const bool dropped =
-        settings_.release_drop > 0.0 && scale_ <= peak_ * (1.0 - settings_.release_drop);
-    // The target's own size back near where the push began is a pull-back even where the depth
-    // signal took the pull-back's last step out as the region changing: at 10 fps, or with a
-    // region that changes shape as the hand comes back, that step is 15-25% in one frame with
-    // the centroid jumping, and the signal then stays up. The signal must have come back by
-    // half of release_drop too: a region that flickers to a smaller shape while the push is
-    // held drops the raw size alone. Only the depth signal's steps part raw and signal, so
-    // without them (glitch_jump 0) the rule is off.
-    const bool back = settings_.glitch_jump > 0.0 && push_raw_ > 0.0 &&
-                      raw_ <= push_raw_ * (1.0 + settings_.release_rise) &&
-                      scale_ <= peak_ * (1.0 - settings_.release_drop / 2.0);
-    // Most of the push's rise gone: after a drag to where the target looks bigger, neither
-    // release_rise nor release_drop may be reached.
-    const bool share = settings_.release_share > 0.0 && baseline_ > 0.0 &&
-                       rise_ <= settings_.release_share * (peak_ / baseline_ - 1.0);
-    return held(rise_ <= settings_.release_rise || dropped || back || share, release_crossed());
-}
-
-// As press_crossed(), for the pull-back: at 10 fps the release waited a frame for its hold, and a
-// double click's second push came inside the first one's refractory time. Where the previous
-// frame was at least halfway down from the largest size to the release's level: a held push
-// that dips for one frame (the region dropping a piece) is held from that frame as before.
-Timestamp ClickMachine::release_crossed() const noexcept {
-    if (!(last_scale_ > 0.0) || now_ <= last_frame_) return now_;
-    double level = baseline_ * (1.0 + settings_.release_rise);
-    if (settings_.release_drop > 0.0) {
-        level = std::max(level, peak_ * (1.0 - settings_.release_drop));
-    }
-    if (settings_.release_share > 0.0) {
-        level = std::max(level, baseline_ + settings_.release_share * (peak_ - baseline_));
-    }
-    if (!(last_scale_ > level) || scale_ > level) return now_;
-    if (last_scale_ > level + 0.5 * (peak_ - level)) return now_;
-    const double fraction = (last_scale_ - level) / (last_scale_ - scale_);
-    return last_frame_ + static_cast<Timestamp>(fraction * static_cast<double>(now_ - last_frame_));
 }
 
 bool ClickMachine::within_step(double seconds) const noexcept {

@@ -3,7 +3,8 @@
 // result in, the click state and the device command out. The size column is sqrt(area); a rise
 // is size over the baseline, minus 1. Settings: start 5%, press 20%, release 10%, push 0.35 s,
 // refractory 0.3 s, drag 0.8 s, clicks allowed after 0.2 s of tracking, and a baseline held
-// constant (time constant 1000 s) except where a test says otherwise.
+// constant (time constant 1000 s) except where a test says otherwise. The hold, the release's
+// rules and the push's timing are in test_click_timing.cpp.
 
 #include <gtest/gtest.h>
 
@@ -22,12 +23,6 @@ constexpr double aspect = 4.0 / 3.0;
 
 PointerSettings depth() {
     return test::depth_pointer();
-}
-
-PointerSettings held_depth() {
-    PointerSettings s = depth();
-    s.click.press_hold_seconds = 0.05;
-    return s;
 }
 
 TEST(ClickMachine, PushPressesAndPullingBackReleases) {
@@ -49,177 +44,6 @@ TEST(ClickMachine, PushPressesAndPullingBackReleases) {
         {1100,   T,       0.5,  0.5,  0.200,  "refractory", ""},
         {1299,   T,       0.5,  0.5,  0.200,  "refractory", ""},
         {1301,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-    });
-    // clang-format on
-}
-
-TEST(ClickMachine, OneFrameOfAreaNeitherPressesNorReleases) {
-    // press_hold_seconds 0.05: at 10 fps the rise must be at the press on two frames in a row
-    // (0.1 s apart), and at the release on two frames.
-    PointerController pointer(held_depth(), aspect);
-    // clang-format off
-    play(pointer, {
-        //  ms   tracker  x     y     size    click         out
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.5,  0.5,  0.340,  "rising",     ""},       // +70%, one frame
-        { 500,   T,       0.5,  0.5,  0.200,  "idle",       ""},       // back: no click
-        { 600,   T,       0.5,  0.5,  0.215,  "rising",     ""},       // a push
-        { 700,   T,       0.5,  0.5,  0.245,  "rising",     ""},       // at the press since 700
-        { 800,   T,       0.5,  0.5,  0.260,  "pressed",    "+left"},  // held 0.1 s
-        { 900,   T,       0.5,  0.5,  0.200,  "pressed",    ""},       // one frame down
-        {1000,   T,       0.5,  0.5,  0.260,  "pressed",    ""},       // still pressed
-        {1100,   T,       0.5,  0.5,  0.215,  "pressed",    ""},       // at the release since
-        {1200,   T,       0.5,  0.5,  0.205,  "refractory", "-left"},  // held 0.1 s
-    });
-    // clang-format on
-}
-
-TEST(ClickMachine, TheHoldCountsFromWhereARiseUnderWayCrossedThePress) {
-    // press_hold_seconds 0.05 at 10 fps: the rise, 10% at 400 ms and 35% at 500, crossed 20% at
-    // 440 (linearly between the frames), so it has been at the press for 0.06 s on the frame
-    // that shows it. Counting from that frame waited for the next, 0.1 s later. The rise of
-    // OneFrameOfAreaNeitherPressesNorReleases crosses 17 ms before its frame: held there.
-    PointerController pointer(held_depth(), aspect);
-    // clang-format off
-    play(pointer, {
-        //  ms   tracker  x     y     size    click         out
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.5,  0.5,  0.220,  "rising",     ""},       // +10%
-        { 500,   T,       0.5,  0.5,  0.270,  "pressed",    "+left"},  // +35%
-    });
-    // clang-format on
-}
-
-TEST(ClickMachine, TheReleaseHoldCountsFromWhereAPullBackUnderWayCrossedIt) {
-    // press_hold_seconds 0.05 at 10 fps: the pull-back is at 0.235 at 700 ms (under halfway
-    // from the largest size, 0.270, to the release's level, 0.220) and at 0.205 at 800: it
-    // crossed 0.220 at 750, and the release comes at 800, not at the next frame. A single frame
-    // down from the top of a held push is held from its own frame
-    // (OneFrameOfAreaNeitherPressesNorReleases).
-    PointerController pointer(held_depth(), aspect);
-    // clang-format off
-    play(pointer, {
-        //  ms   tracker  x     y     size    click         out
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.5,  0.5,  0.215,  "rising",     ""},
-        { 500,   T,       0.5,  0.5,  0.270,  "pressed",    "+left"},
-        { 600,   T,       0.5,  0.5,  0.270,  "pressed",    ""},
-        { 700,   T,       0.5,  0.5,  0.235,  "pressed",    ""},       // +17.5%
-        { 800,   T,       0.5,  0.5,  0.205,  "refractory", "-left"},  // +2.5%
-    });
-    // clang-format on
-}
-
-TEST(ClickMachine, PullingBackFromADragThatGrewTheTargetReleases) {
-    // The drag carried the target where it looks bigger: pulled back, its size is still 15% over
-    // the old baseline (over release_rise), but 30% under its largest while down.
-    PointerSettings settings = depth();
-    settings.click.release_drop = 0.25;
-    PointerController pointer(settings, aspect);
-    // clang-format off
-    play(pointer, {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.5,  0.5,  0.230,  "rising",     ""},
-        { 500,   T,       0.5,  0.5,  0.260,  "pressed",    "+left"},
-        { 900,   T,       0.5,  0.5,  0.300,  "pressed",    ""},
-        {1300,   T,       0.5,  0.5,  0.330,  "dragging",   ""},       // largest: 0.33
-        {1400,   T,       0.5,  0.5,  0.270,  "dragging",   ""},       // 18% under it
-        {1500,   T,       0.5,  0.5,  0.230,  "refractory", "-left"},  // 30% under it
-    });
-    // clang-format on
-}
-
-TEST(ClickMachine, ADragWhoseRiseIsMostlyGoneReleases) {
-    // release_share 0.33: the drag carried the target where it looks 12.5% bigger; pulled back,
-    // that is over release_rise (10%) and only 20% under the largest size (release_drop 25%),
-    // but under a third of the largest rise (40%): released. Without it the drag stays down.
-    PointerSettings settings = depth();
-    settings.click.release_drop = 0.25;
-    settings.click.release_share = 0.33;
-    // clang-format off
-    const std::vector<test::PointerRow> drag = {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.5,  0.5,  0.280,  "pressed",    "+left"},  // +40%
-        {1200,   T,       0.5,  0.5,  0.280,  "dragging",   ""},
-        {1300,   T,       0.5,  0.5,  0.240,  "dragging",   ""},       // +20%
-        {1400,   T,       0.5,  0.5,  0.225,  "refractory", "-left"},  // +12.5%
-    };
-    // clang-format on
-    PointerController sharing(settings, aspect);
-    play(sharing, drag);
-    settings.click.release_share = 0.0;
-    PointerController stuck(settings, aspect);
-    std::vector<test::PointerRow> held = drag;
-    held[6].click = "dragging";
-    held[6].out = "";
-    play(stuck, held);
-}
-
-TEST(ClickMachine, AHeldRiseReachedInTimePressesAfterPushSeconds) {
-    // The rise reaches the press 0.3 s in (within push_seconds, 0.35 s); holding it there ends
-    // at 0.4 s, after push_seconds: still a press.
-    PointerSettings settings = depth();
-    settings.click.press_hold_seconds = 0.1;
-    PointerController pointer(settings, aspect);
-    // clang-format off
-    play(pointer, {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.5,  0.5,  0.215,  "rising",     ""},
-        { 500,   T,       0.5,  0.5,  0.230,  "rising",     ""},
-        { 600,   T,       0.5,  0.5,  0.245,  "rising",     ""},       // at the press, 0.3 s
-        { 700,   T,       0.5,  0.5,  0.250,  "pressed",    "+left"},  // held 0.1 s, 0.4 s in
-    });
-    // clang-format on
-}
-
-TEST(ClickMachine, ARiseSlowerThanPushSecondsDoesNotPress) {
-    // 3% a frame: the rise passes 20% 0.5 s after it passed 5%, too slow for a push. Each
-    // crossing is placed between its frames: 5% two thirds of the way from 300 to 400 ms.
-    PointerController pointer(depth(), aspect);
-    // clang-format off
-    play(pointer, {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.206,  "idle",       ""},       // +3%
-        { 400,   T,       0.5,  0.5,  0.212,  "rising",     ""},       // +6%: began at 367
-        { 500,   T,       0.5,  0.5,  0.218,  "rising",     ""},
-        { 600,   T,       0.5,  0.5,  0.224,  "rising",     ""},
-        { 700,   T,       0.5,  0.5,  0.230,  "rising",     ""},       // 0.33 s, under 20%
-        { 800,   T,       0.5,  0.5,  0.236,  "drifting",   ""},       // 0.43 s > 0.35 s
-        { 900,   T,       0.5,  0.5,  0.242,  "drifting",   ""},       // +21%: still no press
-        {1000,   T,       0.5,  0.5,  0.260,  "drifting",   ""},       // +30%
-        {1100,   T,       0.5,  0.5,  0.205,  "idle",       ""},       // back near the baseline
-        {1200,   T,       0.5,  0.5,  0.230,  "rising",     ""},       // a real push now
-        {1300,   T,       0.5,  0.5,  0.250,  "pressed",    "+left"},
-    });
-    // clang-format on
-}
-
-TEST(ClickMachine, APushIsTimedFromCrossingToCrossingNotFrameToFrame) {
-    // 4.5% a frame at 10 fps: the rise passes 5% at 311 ms and 20% at 644 ms, 0.33 s apart,
-    // within push_seconds (0.35 s), though the frames around the two crossings are 0.4 s apart.
-    PointerController pointer(depth(), aspect);
-    // clang-format off
-    play(pointer, {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.209,  "idle",       ""},       // +4.5%
-        { 400,   T,       0.5,  0.5,  0.218,  "rising",     ""},       // +9%: 5% at 311
-        { 500,   T,       0.5,  0.5,  0.227,  "rising",     ""},
-        { 600,   T,       0.5,  0.5,  0.236,  "rising",     ""},       // +18%
-        { 700,   T,       0.5,  0.5,  0.245,  "pressed",    "+left"},  // +22.5%: 20% at 644
     });
     // clang-format on
 }

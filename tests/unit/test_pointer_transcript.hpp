@@ -68,6 +68,17 @@ inline core::PointerSettings depth_pointer() {
     return s;
 }
 
+// depth_pointer() with the gestures of click_machine.hpp on: right click after 0.5 s still, 100
+// wheel detents a frame width, double click within 0.6 s, a hold radius of 0.02 frame widths.
+inline core::PointerSettings gesture_pointer() {
+    core::PointerSettings s = depth_pointer();
+    s.click.right_seconds = 0.5;
+    s.click.scroll_gain = 100.0;
+    s.click.double_seconds = 0.6;
+    s.click.hold_radius = 0.02;
+    return s;
+}
+
 struct PointerRow {
     double ms;           // frame time, milliseconds
     TrackerState state;  // the tracker's state after the frame

@@ -104,18 +104,20 @@ class ClickMachine {
     // scale); the previous frame's time when the rise was there already, this frame's when it
     // is not there yet.
     Timestamp crossed(double level) const noexcept;
+    // The time `fraction` of the way from the previous frame to this one.
+    Timestamp between_frames(double fraction) const noexcept;
     // Whether `condition` has held for press_hold_seconds up to this frame, counting from
     // `since` (no later than now) when it begins to hold on this frame.
     bool held(bool condition, Timestamp since) noexcept;
     // RISING: when the rise crossed press_rise, placed between this frame and the previous one
     // when the push was under way on that frame already; this frame's time otherwise.
     Timestamp press_crossed() const noexcept;
-    // PRESSED, DRAGGING, HOLDING, RIGHT_ARMED, SCROLLING: when the signal came down through the
-    // release's level (release_rise over the baseline, release_drop under the largest size, or
-    // release_share of the largest rise),
-    // placed between the frames, when the pull-back was under way on the previous frame; this
-    // frame's time otherwise.
-    Timestamp release_crossed() const noexcept;
+    // PRESSED, DRAGGING, HOLDING, RIGHT_ARMED, SCROLLING (click_release.cpp): the signal's
+    // level at or under which the push is pulled back; and when the signal came down through
+    // `level`, placed between the frames, where the pull-back was under way on the previous
+    // frame (this frame's time otherwise).
+    double release_level() const noexcept;
+    Timestamp release_crossed(double level) const noexcept;
     void release() noexcept;
     bool pulled_back() noexcept;  // PRESSED, DRAGGING: the release's condition
     // Whether a step the depth signal took out came within `seconds` (0: never).
