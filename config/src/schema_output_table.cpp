@@ -111,6 +111,11 @@ std::vector<Key> output_keys() {
             "since the press (0 = off)",
             [](auto& c) -> auto& { return c.core.pointer.click.release_share; }),
         real_key(
+            "click", "release_raw_seconds", 0.0, 10.0,
+            "seconds that the target's own size back where the push began releases, even where "
+            "the depth signal took the pull-back out as the region changing (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.release_raw_seconds; }),
+        real_key(
             "click", "glitch_step", 0.0, 5.0,
             "a one-frame change of sqrt(area) this large (relative) that comes with a "
             "centroid jump of glitch_jump is the tracker's region changing: taken out of the "

@@ -53,6 +53,16 @@ bool ClickMachine::pulled_back() noexcept {
     const bool back = settings_.glitch_jump > 0.0 && push_raw_ > 0.0 &&
                       raw_ <= push_raw_ * (1.0 + settings_.release_rise) &&
                       scale_ <= peak_ * (1.0 - settings_.release_drop / 2.0);
+    // The raw size back for release_raw_seconds releases a press or drag whatever the signal:
+    // at 10 fps a quick pull-back is one step the signal took out, and the signal then stays
+    // at the drag's level, short of the half drop. A held gesture's size moves with the hand.
+    const bool raw_back = settings_.release_raw_seconds > 0.0 && settings_.glitch_jump > 0.0 &&
+                          (state_ == ClickState::pressed || state_ == ClickState::dragging) &&
+                          push_raw_ > 0.0 && raw_ <= push_raw_ * (1.0 + settings_.release_rise);
+    if (!raw_back || (raw_back_since_ && *raw_back_since_ < pressed_at_)) raw_back_since_.reset();
+    if (raw_back && !raw_back_since_) raw_back_since_ = now_;
+    if (raw_back_since_ && seconds_since(*raw_back_since_) >= settings_.release_raw_seconds)
+        return true;
     return held(scale_ <= level || back, release_crossed(level));
 }
 

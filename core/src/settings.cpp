@@ -34,6 +34,7 @@ Settings paper_settings() {
     click.press_hold_seconds = 0.0;
     click.release_drop = 0.0;
     click.release_share = 0.0;
+    click.release_raw_seconds = 0.0;
     click.glitch_jump = 0.0;
     click.push_travel = 0.0;
     click.push_dip = 0.0;

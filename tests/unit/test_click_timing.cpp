@@ -31,6 +31,34 @@ PointerSettings held_depth() {
     return s;
 }
 
+// A push of +40% at 0.4 s, held into a drag by 1.2 s (10 fps rows, from the frame that picks).
+std::vector<test::PointerRow> a_drag() {
+    // clang-format off
+    return {
+        {   0,   T,       0.5,  0.5,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.5,  0.5,  0.280,  "pressed",    "+left"},  // +40%
+        {1200,   T,       0.5,  0.5,  0.280,  "dragging",   ""},
+    };
+    // clang-format on
+}
+
+// Plays a drag's `rows` with `settings`, then with the rule under test turned off by `off`:
+// the row `release` that let the button up then stays dragging with no command.
+template <typename Off>
+void play_then_stuck(PointerSettings settings, const std::vector<test::PointerRow>& rows,
+                     std::size_t release, Off off) {
+    PointerController with(settings, aspect);
+    play(with, rows);
+    off(settings);
+    PointerController without(settings, aspect);
+    std::vector<test::PointerRow> stuck = rows;
+    stuck[release].click = "dragging";
+    stuck[release].out = "";
+    play(without, stuck);
+}
+
 TEST(ClickMachine, OneFrameOfAreaNeitherPressesNorReleases) {
     // press_hold_seconds 0.05: at 10 fps the rise must be at the press on two frames in a row
     // (0.1 s apart), and at the release on two frames.
@@ -122,25 +150,37 @@ TEST(ClickMachine, ADragWhoseRiseIsMostlyGoneReleases) {
     PointerSettings settings = depth();
     settings.click.release_drop = 0.25;
     settings.click.release_share = 0.33;
+    std::vector<test::PointerRow> drag = a_drag();
     // clang-format off
-    const std::vector<test::PointerRow> drag = {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.5,  0.5,  0.280,  "pressed",    "+left"},  // +40%
-        {1200,   T,       0.5,  0.5,  0.280,  "dragging",   ""},
+    drag.insert(drag.end(), {
         {1300,   T,       0.5,  0.5,  0.240,  "dragging",   ""},       // +20%
         {1400,   T,       0.5,  0.5,  0.225,  "refractory", "-left"},  // +12.5%
-    };
+    });
     // clang-format on
-    PointerController sharing(settings, aspect);
-    play(sharing, drag);
-    settings.click.release_share = 0.0;
-    PointerController stuck(settings, aspect);
-    std::vector<test::PointerRow> held = drag;
-    held[6].click = "dragging";
-    held[6].out = "";
-    play(stuck, held);
+    play_then_stuck(settings, drag, 6, [](PointerSettings& s) { s.click.release_share = 0.0; });
+}
+
+TEST(ClickMachine, ADragPulledBackInOneTakenOutStepReleases) {
+    // release_raw_seconds 0.3: at 10 fps the pull-back is one step of -29% with the centroid
+    // jumping 0.107 of the size, which the depth signal takes out as the region changing, so
+    // the signal stays at the drag's level. The raw size back where the push began for 0.3 s
+    // releases; without the rule the drag stays down.
+    PointerSettings settings = depth();
+    settings.click.glitch_step = 0.08;
+    settings.click.glitch_jump = 0.10;
+    settings.click.release_drop = 0.25;  // the signal must come down 12.5% for the size alone
+    settings.click.release_raw_seconds = 0.3;
+    std::vector<test::PointerRow> drag = a_drag();
+    // clang-format off
+    drag.insert(drag.end(), {
+        {1300,   T,       0.53, 0.5,  0.200,  "dragging",   "rel -30 0"},  // taken out
+        {1400,   T,       0.53, 0.5,  0.200,  "dragging",   ""},
+        {1500,   T,       0.53, 0.5,  0.200,  "dragging",   ""},
+        {1600,   T,       0.53, 0.5,  0.200,  "refractory", "-left"},  // back for 0.3 s
+    });
+    // clang-format on
+    play_then_stuck(settings, drag, 8,
+                    [](PointerSettings& s) { s.click.release_raw_seconds = 0.0; });
 }
 
 TEST(ClickMachine, AHeldRiseReachedInTimePressesAfterPushSeconds) {

@@ -86,6 +86,12 @@ struct ClickSettings {
     // pushes 830 to 833 of 891, clicks recalled 904 to 918, false clicks the same
     // (docs/clicks.md). 0: off.
     double release_share = 0.33;
+    // The target's raw size back where the push began (within release_rise) for this long
+    // releases even where the depth signal stays up: the pull-back's step was taken out as the
+    // region changing (at 10 fps a quick pull-back is one step of 30-40% with the centroid
+    // jumping), and a drag stayed down through the next clicks. A region that flickers to a
+    // smaller shape comes back within a frame or two. 0: off.
+    double release_raw_seconds = 0.3;
     // The depth signal (depth_signal.hpp): a step of sqrt(area) of at least glitch_step
     // (relative) in one frame that comes with a centroid jump of at least glitch_jump of the
     // target's size is the tracker's region changing, not the target coming closer, and is
