@@ -166,6 +166,7 @@ void ClickMachine::confirm() noexcept {
     result_.push_began = push_began_;
     held_since_.reset();
     peak_ = scale_;
+    raw_back_since_.reset();
     pressed_at_ = now_;
     if (settings_.right_seconds > 0.0 || settings_.scroll_gain > 0.0) {
         // Which gesture it is shows only after the press: no button until then.

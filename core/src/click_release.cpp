@@ -45,23 +45,23 @@ bool ClickMachine::pulled_back() noexcept {
     const double level = release_level();
     // The target's own size back near where the push began is a pull-back even where the depth
     // signal took the pull-back's last step out as the region changing: at 10 fps, or with a
-    // region that changes shape as the hand comes back, that step is 15-25% in one frame with
-    // the centroid jumping, and the signal then stays up. The signal must have come back by
-    // half of release_drop too: a region that flickers to a smaller shape while the push is
-    // held drops the raw size alone. Only the depth signal's steps part raw and signal, so
-    // without them (glitch_jump 0) the rule is off.
-    const bool back = settings_.glitch_jump > 0.0 && push_raw_ > 0.0 &&
-                      raw_ <= push_raw_ * (1.0 + settings_.release_rise) &&
-                      scale_ <= peak_ * (1.0 - settings_.release_drop / 2.0);
-    // The raw size back for release_raw_seconds releases a press or drag whatever the signal:
-    // at 10 fps a quick pull-back is one step the signal took out, and the signal then stays
-    // at the drag's level, short of the half drop. A held gesture's size moves with the hand.
-    const bool raw_back = settings_.release_raw_seconds > 0.0 && settings_.glitch_jump > 0.0 &&
-                          (state_ == ClickState::pressed || state_ == ClickState::dragging) &&
-                          push_raw_ > 0.0 && raw_ <= push_raw_ * (1.0 + settings_.release_rise);
-    if (!raw_back || (raw_back_since_ && *raw_back_since_ < pressed_at_)) raw_back_since_.reset();
-    if (raw_back && !raw_back_since_) raw_back_since_ = now_;
-    if (raw_back_since_ && seconds_since(*raw_back_since_) >= settings_.release_raw_seconds)
+    // region that changes shape as the hand comes back, that step is 15-40% in one frame with
+    // the centroid jumping, and the signal then stays up. Only the depth signal's steps part
+    // raw and signal, so without them (glitch_jump 0) neither rule below applies.
+    const bool home = settings_.glitch_jump > 0.0 && push_raw_ > 0.0 &&
+                      raw_ <= push_raw_ * (1.0 + settings_.release_rise);
+    // At once when the signal has come back by half of release_drop too: a region that
+    // flickers to a smaller shape while the push is held drops the raw size alone.
+    const bool back = home && scale_ <= peak_ * (1.0 - settings_.release_drop / 2.0);
+    // After release_raw_seconds whatever the signal (the flicker comes back within a frame or
+    // two), for a button that is down: a held gesture's size moves with the hand.
+    if (!home || (state_ != ClickState::pressed && state_ != ClickState::dragging)) {
+        raw_back_since_.reset();
+    } else if (!raw_back_since_) {
+        raw_back_since_ = now_;
+    }
+    if (settings_.release_raw_seconds > 0.0 && raw_back_since_ &&
+        seconds_since(*raw_back_since_) >= settings_.release_raw_seconds)
         return true;
     return held(scale_ <= level || back, release_crossed(level));
 }

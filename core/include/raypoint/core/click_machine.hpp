@@ -142,7 +142,8 @@ class ClickMachine {
     // DRAGGING) without a break; nothing while it is not.
     std::optional<Timestamp> held_since_;
     double peak_ = 0.0;  // the largest sqrt(area) since the press
-    // Since when the raw size has been back where the push began (release_raw_seconds).
+    // PRESSED, DRAGGING: since when the raw size has been back where the push began
+    // (release_raw_seconds); reset by each press.
     std::optional<Timestamp> raw_back_since_;
     // The last left click's release, for double_seconds; nothing after a double click.
     std::optional<Timestamp> clicked_at_;
