@@ -11,11 +11,10 @@
 namespace raypoint::core {
 namespace {
 
+using test::aspect;
 using test::picked;
 using test::play;
 using test::T;
-
-constexpr double aspect = 4.0 / 3.0;
 
 PointerSettings gestures() {
     return test::gesture_pointer();

@@ -12,13 +12,12 @@
 namespace raypoint::core {
 namespace {
 
+using test::aspect;
 using test::picked;
 using test::play;
 using test::S;
 using test::T;
 using test::Watch;
-
-constexpr double aspect = 4.0 / 3.0;
 
 // A dead zone of 0.1 widths/s (0.01 a frame) keeps the small moves below out of the output,
 // so the out column shows the clicks; 0.0304 a frame gives (0.0304 - 0.01) x 1000 = 20.4 px.

@@ -16,12 +16,11 @@
 namespace raypoint::core {
 namespace {
 
+using test::aspect;
 using test::picked;
 using test::play;
 using test::S;
 using test::T;
-
-constexpr double aspect = 4.0 / 3.0;
 
 PointerSettings gestures() {
     return test::gesture_pointer();

@@ -11,12 +11,11 @@
 namespace raypoint::core {
 namespace {
 
+using test::aspect;
 using test::picked;
 using test::play;
 using test::S;
 using test::T;
-
-constexpr double aspect = 4.0 / 3.0;
 
 // Relative, 1000 px a frame width, no dead zone, no acceleration, no clicks.
 PointerSettings plain() {

@@ -30,6 +30,9 @@ constexpr TrackerState S = TrackerState::searching;
 // sqrt(area) of the frame that picks a target: TRACKING, but no area and no position yet.
 constexpr double picked = -1.0;
 
+// The transcripts' camera frame: 4:3, as 160x120.
+constexpr double aspect = 4.0 / 3.0;
+
 // The transcripts' pointer before each file's own settings: relative, mirrored, 1000 device
 // pixels a frame width, no dead zone and no acceleration, so the out column is hand motion
 // times 1000.
