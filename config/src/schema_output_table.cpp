@@ -127,6 +127,11 @@ std::vector<Key> output_keys() {
             "of glitch_step as the region changing (0 = off)",
             [](auto& c) -> auto& { return c.core.pointer.click.glitch_jump; }),
         real_key(
+            "click", "glitch_leap", 0.0, 10.0,
+            "a one-frame change of sqrt(area) this large (relative, per 1/30 s of the frame's "
+            "interval) is the region changing whatever the centroid does (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.glitch_leap; }),
+        real_key(
             "click", "glitch_return", 0.0, 1.0,
             "a step taken out is given back on the next frame when the centroid has come back "
             "this share of its jump (1 = exactly back): it was a push whose frame blurred",

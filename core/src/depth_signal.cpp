@@ -31,20 +31,28 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         cv::norm(centroid - before_centroid_) <= (1.0 - settings_.glitch_return) * before_jump_) {
         gain_ = before_gain_;  // the centroid is back: whatever the size does now is the target's
         given_back_ = true;
-    } else if (previous_ > 0.0 && settings_.glitch_jump > 0.0) {
+    } else if (previous_ > 0.0 && (settings_.glitch_jump > 0.0 || settings_.glitch_leap > 0.0)) {
         const double step = *scale / previous_ - 1.0;
         // The centroid's jump in units of the target's size: a push about a steady centroid
         // moves it little (the gesture set's pushes: a median 0.01 of the size a frame), a
         // region that takes in or drops a piece moves it by about the piece's share.
         const double moved = cv::norm(centroid - previous_centroid_);  // frame widths
         const double jump = moved / previous_;
+        // The time since the last frame in frames 1/30 s apart.
+        const double interval = static_cast<double>(timestamp - previous_time) / (1e6 / 30.0);
         // glitch_step is a step between frames 1/30 s apart: a push brings the target closer
         // by three times as much between frames at 10 fps (a quick push is 2-3 frames there).
-        const double frames =
-            std::max(1.0, static_cast<double>(timestamp - previous_time) / (1e6 / 30.0));
+        const double frames = std::max(1.0, interval);
         // At 10 fps a push's own centroid drifts three times as far between frames.
-        jumped_ = jump >= settings_.glitch_jump * frames;
-        if (std::abs(step) >= settings_.glitch_step * frames && jump >= settings_.glitch_jump) {
+        jumped_ = settings_.glitch_jump > 0.0 && jump >= settings_.glitch_jump * frames;
+        const bool shifted = settings_.glitch_jump > 0.0 &&
+                             std::abs(step) >= settings_.glitch_step * frames &&
+                             jump >= settings_.glitch_jump;
+        // Faster than any push, whatever the centroid: a piece taken in straight above or
+        // below the centroid hardly moves it. Per the frame's own interval, 60 fps included.
+        const bool leap = settings_.glitch_leap > 0.0 && interval > 0.0 &&
+                          std::abs(step) >= settings_.glitch_leap * interval;
+        if (shifted || leap) {
             pending_ = true;
             before_centroid_ = previous_centroid_;
             before_gain_ = gain_;

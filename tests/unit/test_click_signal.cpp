@@ -200,6 +200,37 @@ TEST(DepthSignal, ACentroidJumpCountsPerThirtiethOfASecond) {
     EXPECT_FALSE(signal.jumped());
 }
 
+TEST(DepthSignal, AStepFasterThanAnyPushIsTakenOutWhereverTheCentroid) {
+    // glitch_leap 0.3 per 1/30 s: at 60 fps a step of +30% with the centroid still (0.025 of
+    // the size, under glitch_jump) is the region changing: a push of 40% closer in 0.15 s
+    // steps at most 19% per 1/30 s. A step of +8% there is the target's own; at 10 fps the
+    // limit is 90% and +30% is one frame of a quick push.
+    ClickSettings click = glitches().click;
+    click.glitch_leap = 0.3;
+    const cv::Point2d here(0.5, 0.4);
+    const cv::Point2d still = here + cv::Point2d(0.005, 0);
+    DepthSignal fast(click);
+    fast.update(0.20, here, 0);
+    EXPECT_NEAR(*fast.update(0.26, still, 16'667), 0.20, 1e-12);
+    EXPECT_TRUE(fast.absorbed());
+    DepthSignal growing(click);
+    growing.update(0.20, here, 0);
+    EXPECT_DOUBLE_EQ(*growing.update(0.216, still, 16'667), 0.216);
+    EXPECT_FALSE(growing.absorbed());
+    DepthSignal slow(click);
+    slow.update(0.20, here, 0);
+    EXPECT_DOUBLE_EQ(*slow.update(0.26, still, 100'000), 0.26);
+    EXPECT_FALSE(slow.absorbed());
+    click.glitch_jump = 0.0;  // the leap alone
+    DepthSignal alone(click);
+    alone.update(0.20, here, 0);
+    EXPECT_NEAR(*alone.update(0.26, still, 16'667), 0.20, 1e-12);
+    click.glitch_leap = 0.0;
+    DepthSignal off(click);
+    off.update(0.20, here, 0);
+    EXPECT_DOUBLE_EQ(*off.update(0.26, still, 16'667), 0.26);
+}
+
 TEST(DepthSignal, OffPassesTheScaleThrough) {
     DepthSignal signal(depth().click);  // glitch_jump 0
     EXPECT_DOUBLE_EQ(*signal.update(0.20, {0.5, 0.4}), 0.20);

@@ -9,7 +9,8 @@
 // When the centroid is back where it was on the next frame (glitch_return of the way), the
 // step is given back: the size that stays up with the centroid back in place is a push whose
 // frame blurred (at 10 fps a push of 0.25 s is one frame), and a size back too was a one-frame
-// glitch.
+// glitch. A step faster than any push (glitch_leap per 1/30 s) is absorbed whatever the
+// centroid does.
 // Pure: no allocation, no exceptions.
 
 #include <optional>

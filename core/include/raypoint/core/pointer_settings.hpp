@@ -101,6 +101,13 @@ struct ClickSettings {
     // 81.7% / 78.3% to 83.3% / 80.0% at seeds 1 / 2, nothing else changed).
     double glitch_step = 0.08;
     double glitch_jump = 0.10;
+    // A step of sqrt(area) of at least this (relative) per 1/30 s of the frame's own interval
+    // (15% at 60 fps, 90% at 10 fps) is the region changing whatever the centroid does: the
+    // fastest push of the gesture set (40% closer in 0.15 s, eased) grows at most 18% per
+    // 1/30 s. On the gesture set, seeds 1-5: false clicks 8 to 7 (a swipe's first frame at
+    // 60 fps, +38% with the centroid 0.10 of the size away), nothing else changed from 0.3 to
+    // 0.5; 0.2 lost a target push, 0.15 four (docs/clicks.md). 0: off.
+    double glitch_leap = 0.30;
     // A step absorbed is given back on the next frame when the centroid has come back at least
     // this share of its jump: a push whose frame blurred. A region that took in a piece and
     // keeps it moves its centroid back a little as the piece settles; 0.7 keeps that step out
