@@ -132,6 +132,12 @@ std::vector<Key> output_keys() {
             "interval) is the region changing whatever the centroid does (0 = off)",
             [](auto& c) -> auto& { return c.core.pointer.click.glitch_leap; }),
         real_key(
+            "click", "glitch_light", 0.0, 1.0,
+            "a one-frame change of sqrt(area) of glitch_step on a frame whose light changed this "
+            "much (relative: a camera's gain jump) is the outline changing with the light "
+            "(0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.glitch_light; }),
+        real_key(
             "click", "glitch_return", 0.0, 1.0,
             "a step taken out is given back on the next frame when the centroid has come back "
             "this share of its jump (1 = exactly back): it was a push whose frame blurred",

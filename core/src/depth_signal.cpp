@@ -15,7 +15,7 @@ void DepthSignal::reset() noexcept {
 }
 
 std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point2d centroid,
-                                          Timestamp timestamp) noexcept {
+                                          Timestamp timestamp, double light_change) noexcept {
     const Timestamp previous_time = previous_time_;
     previous_time_ = timestamp;
     absorbed_ = false;
@@ -31,7 +31,8 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         cv::norm(centroid - before_centroid_) <= (1.0 - settings_.glitch_return) * before_jump_) {
         gain_ = before_gain_;  // the centroid is back: whatever the size does now is the target's
         given_back_ = true;
-    } else if (previous_ > 0.0 && (settings_.glitch_jump > 0.0 || settings_.glitch_leap > 0.0)) {
+    } else if (previous_ > 0.0 && (settings_.glitch_jump > 0.0 || settings_.glitch_leap > 0.0 ||
+                                   settings_.glitch_light > 0.0)) {
         const double step = *scale / previous_ - 1.0;
         // The centroid's jump in units of the target's size: a push about a steady centroid
         // moves it little (the gesture set's pushes: a median 0.01 of the size a frame), a
@@ -52,8 +53,14 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         // below the centroid hardly moves it. Per the frame's own interval, 60 fps included.
         const bool leap = settings_.glitch_leap > 0.0 && interval > 0.0 &&
                           std::abs(step) >= settings_.glitch_leap * interval;
-        if (shifted || leap) {
-            pending_ = true;
+        // A camera's gain or exposure jump moves the outline's weak edges: the region steps
+        // with the light, on that frame, and the centroid need not move.
+        const bool relit = settings_.glitch_light > 0.0 && light_change >= settings_.glitch_light &&
+                           std::abs(step) >= settings_.glitch_step * frames;
+        if (shifted || leap || relit) {
+            // Given back when the centroid comes back: only a step whose centroid jumped can
+            // show that it was the centroid's alone (a still centroid is always "back").
+            pending_ = shifted;
             before_centroid_ = previous_centroid_;
             before_gain_ = gain_;
             before_jump_ = moved;

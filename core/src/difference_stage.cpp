@@ -243,6 +243,7 @@ void DifferenceStage::reset() noexcept {
     movement_ = 0.0;
     offset_ = 0;
     relit_current_ = false;
+    light_change_ = 0.0;
     std::fill(row_gains_.begin(), row_gains_.end(), gain_one);
 }
 
@@ -321,6 +322,7 @@ void DifferenceStage::compute(const cv::Mat& grey, const cv::Mat& previous_grey,
     }
     std::tie(offset_, movement_) = compensated(difference_, smallest);
     relit_current_ = false;
+    light_change_ = 0.0;
     if (rows_ && estimate_row_gains(grey, previous_grey)) {
         std::uint8_t* const grey_row = grey_row_.data();
         smallest = 255;
@@ -336,6 +338,15 @@ void DifferenceStage::compute(const cv::Mat& grey, const cv::Mat& previous_grey,
             offset_ = offset;
             movement_ = movement;
             relit_current_ = true;
+            // The change every band shares, in one direction: a gain or exposure jump lights the
+            // whole picture alike, flicker's bands go brighter and darker by turns.
+            int brighter = gain_one;
+            int darker = gain_one;
+            for (const int gain : band_gains_) {
+                brighter = std::min(brighter, gain - gain_one);
+                darker = std::min(darker, gain_one - gain);
+            }
+            light_change_ = static_cast<double>(std::max({brighter, darker, 0})) / gain_one;
         }
     }
     if (!channels && !relit_current_) return;

@@ -72,7 +72,8 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
             const double raw = has_target ? std::sqrt(*frame.area) : 0.0;
             const std::optional<double> scale =
                 depth_.update(has_target ? std::optional<double>(raw) : std::nullopt,
-                              cv::Point2d(frame.centroid.x, frame.centroid.y / frame_aspect_), now);
+                              cv::Point2d(frame.centroid.x, frame.centroid.y / frame_aspect_), now,
+                              frame.light_change);
             const ClickStep step = clicker_.step(now, scale, ready, where, depth_.given_back(), raw,
                                                  depth_.absorbed(), depth_.jumped());
             // x and y stay where the push began while a button is down or may yet be, and on

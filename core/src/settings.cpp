@@ -37,6 +37,7 @@ Settings paper_settings() {
     click.release_raw_seconds = 0.0;
     click.glitch_jump = 0.0;
     click.glitch_leap = 0.0;
+    click.glitch_light = 0.0;
     click.push_travel = 0.0;
     click.push_dip = 0.0;
     click.refractory_seconds = 0.3;

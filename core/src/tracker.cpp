@@ -74,6 +74,7 @@ FrameResult Tracker::process(const FrameView& frame) noexcept {
     const StepResult step = d.machine.step(frame.timestamp, d.evidence);
     result.state = step.state;
     result.movement = d.preprocessor.movement();
+    result.light_change = d.preprocessor.light_change();
     result.iterations = step.iterations;
     result.recovered = step.recovered;
     result.held = step.held;

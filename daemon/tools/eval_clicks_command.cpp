@@ -140,8 +140,9 @@ struct CachedResult {
     double centroid_x, centroid_y;
     double inner_x, inner_y;
     double movement;
+    double light_change;
 };
-constexpr const char* cache_suffix = ".results2";
+constexpr const char* cache_suffix = ".results3";
 
 TrackedClip cached_track(const scene::GestureClip& clip, const core::Settings& settings,
                          const std::string& dir, const std::string& set, std::uint32_t seed) {
@@ -167,6 +168,7 @@ TrackedClip cached_track(const scene::GestureClip& clip, const core::Settings& s
             r.centroid = cv::Point2d(c.centroid_x, c.centroid_y);
             r.inner = cv::Point2d(c.inner_x, c.inner_y);
             r.movement = c.movement;
+            r.light_change = c.light_change;
             tracked.results.push_back(r);
         }
         return tracked;
@@ -182,7 +184,7 @@ TrackedClip cached_track(const scene::GestureClip& clip, const core::Settings& s
                              r.position.y, r.area.value_or(-1.0),
                              r.centroid.x, r.centroid.y,
                              r.inner.x,    r.inner.y,
-                             r.movement};
+                             r.movement,   r.light_change};
         out.write(reinterpret_cast<const char*>(&c), sizeof c);
     }
     if (!out) throw InputError(path + ": cannot write the cache");

@@ -231,6 +231,42 @@ TEST(DepthSignal, AStepFasterThanAnyPushIsTakenOutWhereverTheCentroid) {
     EXPECT_DOUBLE_EQ(*off.update(0.26, still, 16'667), 0.26);
 }
 
+TEST(DepthSignal, AStepOnAFrameWhoseLightJumpedIsTakenOut) {
+    // glitch_light 0.1: +9% (over glitch_step's 8%) with the centroid still, on a frame whose
+    // light changed by 25% (a camera's gain jump), is the outline moving with the light; the
+    // same step under still light, or light changed by 5% (flicker), is the target's own.
+    ClickSettings click = glitches().click;
+    click.glitch_light = 0.1;
+    const cv::Point2d here(0.5, 0.4);
+    for (const auto& [light, absorbed] : {std::pair{0.25, true}, {0.0, false}, {0.05, false}}) {
+        DepthSignal signal(click);
+        signal.update(0.20, here, 0);
+        signal.update(0.218, here, 33'333, light);
+        EXPECT_EQ(signal.absorbed(), absorbed) << "light changed by " << light;
+    }
+}
+
+TEST(DepthSignal, ThePointerPassesTheFramesLightChangeOn) {
+    // The frame's light_change reaches the depth signal: a 30 fps rise of 12% a frame for three
+    // frames, the first with the light 25% up, presses only from the second's growth on.
+    PointerSettings settings = glitches();
+    settings.click.glitch_light = 0.1;
+    const auto first_press = [&](double light) {
+        PointerController pointer(settings, aspect);
+        double size = 0.2;
+        for (int i = 0; i < 20; ++i) {
+            if (i >= 15 && i < 18) size *= 1.12;
+            core::FrameResult frame =
+                test::frame_of({i * 100.0 / 3.0, T, 0.5, 0.5, size, nullptr, ""}, i);
+            if (i == 15) frame.light_change = light;
+            if (pointer.update(frame).button_changes().size() > 0) return i;
+        }
+        return -1;
+    };
+    EXPECT_EQ(first_press(0.0), 16);   // +25%: over press_rise (20%)
+    EXPECT_EQ(first_press(0.25), 17);  // +12% and +25% from the absorbed step's level
+}
+
 TEST(DepthSignal, OffPassesTheScaleThrough) {
     DepthSignal signal(depth().click);  // glitch_jump 0
     EXPECT_DOUBLE_EQ(*signal.update(0.20, {0.5, 0.4}), 0.20);

@@ -213,5 +213,26 @@ TEST(DifferenceStage, RowCompensationFindsALightChangeInTheLastBandsAlone) {
     }
 }
 
+double brighter(int) {
+    return 1.25;
+}
+
+// light_change(): a gain jump lights every band alike (25% here, within a level's rounding);
+// flicker's bands go brighter and darker by turns and share no change; the last five bands
+// alone share none with the rest; still light is 0.
+TEST(DifferenceStage, TheLightChangeIsWhatEveryBandShares) {
+    const cv::Mat before = textured(unlit, cv::Rect(20, 50, 16, 16));
+    DifferenceStage rows(difference_settings(EdgeSource::max_channel, Compensation::rows));
+    const auto change = [&](double (*gain)(int)) {
+        const cv::Mat after = textured(gain, cv::Rect(28, 50, 16, 16));
+        rows.compute(after, before, as_colour(after), as_colour(before));
+        return rows.light_change();
+    };
+    EXPECT_NEAR(change(brighter), 0.25, 0.02);
+    EXPECT_EQ(change(banded), 0.0);
+    EXPECT_EQ(change(lower_bands_brighter), 0.0);
+    EXPECT_EQ(change(unlit), 0.0);
+}
+
 }  // namespace
 }  // namespace raypoint::core

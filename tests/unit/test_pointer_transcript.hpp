@@ -66,6 +66,7 @@ inline core::PointerSettings depth_pointer() {
     s.click.release_share = 0.0;
     s.click.glitch_jump = 0.0;
     s.click.glitch_leap = 0.0;
+    s.click.glitch_light = 0.0;
     s.click.push_travel = 0.0;
     s.click.push_dip = 0.0;
     s.click.settle_seconds = 0.0;

@@ -30,8 +30,10 @@ class DepthSignal {
     // centroid: the tracker's raw centroid this frame, frame widths on both axes.
     // Returns the scale with the region's steps taken out; nullopt without a target.
     // timestamp: the frame's; glitch_step is per 1/30 s, scaled up for frames further apart.
+    // light_change: the frame's (FrameResult::light_change); a step of glitch_step with the
+    // light changed by glitch_light is the outline changing with the light.
     std::optional<double> update(std::optional<double> scale, cv::Point2d centroid,
-                                 Timestamp timestamp = 0) noexcept;
+                                 Timestamp timestamp = 0, double light_change = 0.0) noexcept;
 
     // Whether the last update absorbed a step.
     bool absorbed() const noexcept { return absorbed_; }

@@ -43,6 +43,11 @@ class DifferenceStage {
     // the current frame would show of a still scene. relit() is false otherwise (always under
     // Compensation::frame, and after reset()).
     bool relit() const noexcept { return relit_current_; }
+    // How far the light changed since the previous frame, relative, by as much in every band
+    // of rows and the same way (0.3: every band at least 30% brighter, or every band 30%
+    // darker), when the relit difference was kept; 0 otherwise. A camera's gain or exposure
+    // jump lights the whole picture alike; flicker's bands go brighter and darker by turns.
+    double light_change() const noexcept { return light_change_; }
     const cv::Mat& previous_color_relit() const noexcept { return relit_; }
 
   private:
@@ -64,6 +69,7 @@ class DifferenceStage {
     cv::Mat relit_;
     cv::Mat relit_difference_;  // the grey difference with the previous image relit
     bool relit_current_ = false;
+    double light_change_ = 0.0;
     double movement_ = 0.0;
     int offset_ = 0;
 };

@@ -108,6 +108,13 @@ struct ClickSettings {
     // 60 fps, +38% with the centroid 0.10 of the size away), nothing else changed from 0.3 to
     // 0.5; 0.2 lost a target push, 0.15 four (docs/clicks.md). 0: off.
     double glitch_leap = 0.30;
+    // A step of glitch_step on a frame whose light changed by at least this (relative, the
+    // change every band of rows shares: FrameResult::light_change) is the outline changing
+    // with the light whatever the centroid does: a camera's gain jump of 20-40% shares 17-38%,
+    // mains flicker's bands none. On the gesture set, seeds 1-5: false clicks 7 to 6 (a
+    // brightness jump's region +9% with the centroid 0.07 of the size away), nothing else
+    // changed at 0.05-0.15 (docs/clicks.md). 0: off.
+    double glitch_light = 0.10;
     // A step absorbed is given back on the next frame when the centroid has come back at least
     // this share of its jump: a push whose frame blurred. A region that took in a piece and
     // keeps it moves its centroid back a little as the piece settles; 0.7 keeps that step out

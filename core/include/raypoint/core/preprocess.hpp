@@ -68,6 +68,7 @@ class Preprocessor {
     // DifferenceStage::movement(): the sum of the compensated difference over the working
     // pixels (paper 4.1 "global inter-frame movement value").
     double movement() const noexcept { return difference_.movement(); }
+    double light_change() const noexcept { return difference_.light_change(); }
     int brightness_offset_applied() const noexcept {
         return difference_.brightness_offset_applied();
     }

@@ -29,8 +29,11 @@ struct FrameResult {
     std::optional<double> area;  // fraction; unknown on the frame a search picks a target
     cv::Point2d inner;           // fractions; valid when has_target
     bool has_position = false;
-    cv::Point3d position;    // smoothed x, y (fractions) and z (paper 4.3), when has_position
-    double movement = 0.0;   // global inter-frame movement: sum of the compensated difference
+    cv::Point3d position;   // smoothed x, y (fractions) and z (paper 4.3), when has_position
+    double movement = 0.0;  // global inter-frame movement: sum of the compensated difference
+    // The light's change since the previous frame that every band of rows shares, relative
+    // (DifferenceStage::light_change()): a camera's gain jump; 0 under still light or flicker.
+    double light_change = 0.0;
     int iterations = 0;      // estimator iterations spent on this frame
     bool recovered = false;  // RECOVERING ran this frame and succeeded
     bool held = false;       // the estimate grew too fast: the last one stands (max_growth)
