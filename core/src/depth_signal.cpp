@@ -46,17 +46,16 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         const double frames = std::max(1.0, interval);
         // At 10 fps a push's own centroid drifts three times as far between frames.
         jumped_ = settings_.glitch_jump > 0.0 && jump >= settings_.glitch_jump * frames;
-        const bool shifted = settings_.glitch_jump > 0.0 &&
-                             std::abs(step) >= settings_.glitch_step * frames &&
-                             jump >= settings_.glitch_jump;
+        const bool large = std::abs(step) >= settings_.glitch_step * frames;
+        const bool shifted = settings_.glitch_jump > 0.0 && large && jump >= settings_.glitch_jump;
         // Faster than any push, whatever the centroid: a piece taken in straight above or
         // below the centroid hardly moves it. Per the frame's own interval, 60 fps included.
         const bool leap = settings_.glitch_leap > 0.0 && interval > 0.0 &&
                           std::abs(step) >= settings_.glitch_leap * interval;
         // A camera's gain or exposure jump moves the outline's weak edges: the region steps
         // with the light, on that frame, and the centroid need not move.
-        const bool relit = settings_.glitch_light > 0.0 && light_change >= settings_.glitch_light &&
-                           std::abs(step) >= settings_.glitch_step * frames;
+        const bool relit =
+            settings_.glitch_light > 0.0 && light_change >= settings_.glitch_light && large;
         if (shifted || leap || relit) {
             // Given back when the centroid comes back: only a step whose centroid jumped can
             // show that it was the centroid's alone (a still centroid is always "back").

@@ -9,8 +9,9 @@
 // When the centroid is back where it was on the next frame (glitch_return of the way), the
 // step is given back: the size that stays up with the centroid back in place is a push whose
 // frame blurred (at 10 fps a push of 0.25 s is one frame), and a size back too was a one-frame
-// glitch. A step faster than any push (glitch_leap per 1/30 s) is absorbed whatever the
-// centroid does.
+// glitch. A step faster than any push (glitch_leap per 1/30 s), and a step of glitch_step on a
+// frame whose light jumped (glitch_light), are absorbed whatever the centroid does, and never
+// given back.
 // Pure: no allocation, no exceptions.
 
 #include <optional>
