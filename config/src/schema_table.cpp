@@ -210,6 +210,11 @@ const std::vector<Key>& schema() {
                 "a target whose estimate is under min_area tries the recovery points before it is "
                 "lost (false: lost at once, as in the paper)",
                 [](auto& c) -> auto& { return c.core.tracking.recover_small; }),
+            real_key(
+                "tracking", "change_seconds", 0.0, 10.0,
+                "seconds of quiet after movement before what changed since the last quiet frame is "
+                "picked, when searching or tracking scenery (0: never)",
+                [](auto& c) -> auto& { return c.core.tracking.change_seconds; }),
             choice_key<InstructionsSetting>(
                 "tracking", "instructions",
                 "preprocessing's vector instructions: auto (measured at start) or one for both "

@@ -18,6 +18,7 @@ Settings paper_settings() {
     settings.estimator.fill_growth = 0.0;
     settings.tracking.keep_still_target = false;
     settings.tracking.recover_small = false;
+    settings.tracking.change_seconds = 0.0;
     settings.tracking.abandon_seconds = 0.0;
     settings.tracking.abandon_grace = 0.0;
     settings.tracking.abandon_still_share = 0.0;

@@ -106,16 +106,76 @@ bool StateMachine::on_initializing() noexcept {
 // Estimation and validation start with the next frame: validating now would compare the target
 // with the background it has just covered.
 bool StateMachine::on_searching() noexcept {
-    if (evidence_->movement() <= search_threshold_) return true;
+    if (evidence_->movement() <= search_threshold_) {
+        if (const auto found = quiet_change(true)) start_target(*found);
+        return true;
+    }
+    moved_since_quiet_ = true;
+    quiet_since_.reset();
     const auto found = evidence_->detect();
     if (!found) return true;
+    start_target(*found);
+    return true;
+}
+
+// A quiet frame is kept while nothing has moved since the last (in SEARCHING only: a tracked
+// target must not become part of the quiet scene). After movement over the search threshold,
+// the first frame change_seconds into the quiet (at or under idle_threshold) looks once for
+// what changed; the quiet frame is kept again from the next quiet frame on, so movement that
+// passed through, or a target that came and left, is not looked for twice. Frame time, so a
+// recording replays as it ran live.
+std::optional<cv::Point2f> StateMachine::quiet_change(bool keep) noexcept {
+    if (settings_.change_seconds <= 0.0) return std::nullopt;
+    if (evidence_->movement() > idle_threshold_) {
+        quiet_since_.reset();
+        return std::nullopt;
+    }
+    if (!quiet_since_) quiet_since_ = now_;
+    if (!moved_since_quiet_) {
+        if (keep) evidence_->keep_quiet_frame();
+        return std::nullopt;
+    }
+    if (now_ - *quiet_since_ < seconds_to_us(settings_.change_seconds)) return std::nullopt;
+    moved_since_quiet_ = false;
+    return evidence_->change(search_threshold_);
+}
+
+// A target taken by mistake as the movement came in (the wall beside an entering hand, the
+// floor under a 10 fps smear) is scenery: its inner point looks as it did in the quiet frame,
+// within color_tolerance. When the change lies in another region, of a target's size, that
+// region is picked instead. A tracked target that came in itself looks different from the quiet
+// frame and is kept, whatever else changed (a ball held by a moving hand).
+bool StateMachine::changed_elsewhere(const Estimate& estimate) noexcept {
+    const auto found = quiet_change(false);
+    if (!found) return false;
+    const auto before = evidence_->quiet_color(estimate.inner);
+    const auto tolerance = static_cast<float>(settings_.color_tolerance);
+    if (!before || color_distance(*before, evidence_->current_color(estimate.inner)) > tolerance)
+        return false;
+    const Estimate there = evidence_->estimate(*found);
+    result_.iterations += there.iterations;
+    if (area_check(there.area) != LossReason::none) return false;
+    // The same region: centroids a quarter of its size apart at most, areas within a factor 2.
+    const double larger = std::max(there.area, estimate.area);
+    const double smaller = std::min(there.area, estimate.area);
+    const double apart =
+        std::hypot(there.centroid.x - estimate.centroid.x, there.centroid.y - estimate.centroid.y);
+    if (apart <= 0.25 * std::sqrt(larger) && smaller >= 0.5 * larger) return false;
+    // A switch, not a loss: the frame has a target, picked where the change is.
+    drop_target(LossReason::elsewhere);
+    result_.lost = false;
+    result_.loss = LossReason::none;
+    start_target(*found);
+    return true;
+}
+
+void StateMachine::start_target(cv::Point2f at) noexcept {
     evidence_->forget_target();
-    pick(*found);
+    pick(at);
     still_since_.reset();
     owned_motion_at_.reset();
     picked_at_ = now_;
     state_ = TrackerState::tracking;
-    return true;
 }
 
 bool StateMachine::on_tracking() noexcept {
@@ -131,6 +191,7 @@ bool StateMachine::on_tracking() noexcept {
     if (pick_moved_on()) return true;
     candidate_ = evidence_->estimate(inner_);
     result_.iterations += candidate_.iterations;
+    if (changed_elsewhere(candidate_)) return true;
     if (moving_elsewhere(candidate_)) {
         drop_target(LossReason::elsewhere);
         return true;

@@ -17,7 +17,7 @@ struct Tracker::Impl {
           estimator(make_estimator(s.estimator)),
           machine(s.tracking, cv::Size(s.preprocess.work_width, s.preprocess.work_height)),
           smoother(s.output),
-          evidence(preprocessor, *estimator, settings.tracking) {}
+          evidence(preprocessor, *estimator, settings.tracking, s.preprocess.compensation_minima) {}
 
     Settings settings;
     Preprocessor preprocessor;

@@ -308,9 +308,13 @@ bool meets(const EvalOptions& options, const Tallies& tallies) {
     return ok;
 }
 
-void write_set(const std::vector<scene::GestureClip>& set, const std::string& dir) {
+// `only`: the one clip of that name (--trace), so a clip --misses names can be looked at with
+// `raypoint track --annotate` without rendering the whole set; empty: every clip.
+void write_set(const std::vector<scene::GestureClip>& set, const std::string& dir,
+               const std::string& only) {
     std::filesystem::create_directories(dir);
     for (const scene::GestureClip& clip : set) {
+        if (!only.empty() && clip.spec.name != only) continue;
         const scene::Renderer renderer(clip.spec);
         const std::string video = dir + "/" + clip.spec.name + ".mp4";
         cv::VideoWriter writer(video, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), clip.spec.fps,
@@ -340,7 +344,7 @@ int eval_clicks_command(std::span<const std::string_view> args) {
                                                     ? std::vector<scene::GestureClip>{}
                                                     : scene::gesture_set(options.set, options.seed);
     if (!options.write_dir.empty()) {
-        write_set(set, options.write_dir);
+        write_set(set, options.write_dir, options.trace);
         return 0;
     }
     // A recorded clip's name is its path, as given.

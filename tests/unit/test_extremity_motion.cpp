@@ -36,7 +36,8 @@ Estimate estimate_after(const cv::Mat& previous, const cv::Mat& current, cv::Poi
     settings.estimator.extremity = extremity;
     Preprocessor images(settings.preprocess);
     const std::unique_ptr<Estimator> estimator = make_estimator(settings.estimator);
-    detail::ImageEvidence evidence(images, *estimator, settings.tracking);
+    detail::ImageEvidence evidence(images, *estimator, settings.tracking,
+                                   settings.preprocess.compensation_minima);
     EXPECT_TRUE(images.process(test::bgr_view(previous, 0), Preprocessor::Edges::computed));
     EXPECT_TRUE(images.process(test::bgr_view(current, 33333), Preprocessor::Edges::computed));
     return evidence.estimate(inner);
@@ -84,7 +85,8 @@ TEST(ExtremityMotion, TheEndStaysTheTargetWhileTheHandPausesUntilTheTargetIsForg
     Settings settings;
     Preprocessor images(settings.preprocess);
     const std::unique_ptr<Estimator> estimator = make_estimator(settings.estimator);
-    detail::ImageEvidence evidence(images, *estimator, settings.tracking);
+    detail::ImageEvidence evidence(images, *estimator, settings.tracking,
+                                   settings.preprocess.compensation_minima);
     ASSERT_TRUE(images.process(test::bgr_view(before, 0), Preprocessor::Edges::computed));
     ASSERT_TRUE(images.process(test::bgr_view(after, 33333), Preprocessor::Edges::computed));
     EXPECT_LT(distance(evidence.estimate({80, 100}).centroid, hand), 10.0F);

@@ -48,7 +48,8 @@ struct Reference {
           estimator(make_estimator(settings.estimator)),
           machine(settings.tracking,
                   cv::Size(settings.preprocess.work_width, settings.preprocess.work_height)),
-          evidence(preprocessor, *estimator, settings.tracking) {}
+          evidence(preprocessor, *estimator, settings.tracking,
+                   settings.preprocess.compensation_minima) {}
 
     StepResult step(const FrameView& frame) {
         EXPECT_TRUE(preprocessor.process(frame, Preprocessor::Edges::computed));

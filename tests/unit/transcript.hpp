@@ -55,6 +55,10 @@ struct Row {
     Event event = Event::none;
     // movement_near()'s answer around any point; unset: all the movement is there.
     std::optional<double> near = std::nullopt;
+    // change()'s answer (TrackingSettings::change_seconds): what differs from the quiet frame.
+    std::optional<cv::Point2f> change = std::nullopt;
+    // quiet_color()'s answer anywhere: the quiet frame's colour.
+    std::optional<cv::Vec3f> quiet = std::nullopt;
 };
 
 // Records every question the state machine asks.
@@ -65,6 +69,8 @@ class Script final : public core::FrameEvidence {
     std::size_t used = 0;
     std::vector<cv::Point2f> estimated_at;
     mutable std::vector<cv::Point2f> painted_at;
+    bool kept_quiet = false;    // keep_quiet_frame() was called
+    bool asked_change = false;  // change() was called
 
     double movement() const noexcept override { return row->movement; }
     double movement_near(cv::Point2f, float) const noexcept override {
@@ -86,12 +92,20 @@ class Script final : public core::FrameEvidence {
     cv::Vec3f previous_color(cv::Point2f at) const noexcept override {
         return before != nullptr ? before->at(at) : cv::Vec3f();
     }
+    void keep_quiet_frame() noexcept override { kept_quiet = true; }
+    std::optional<cv::Point2f> change(double) noexcept override {
+        asked_change = true;
+        return row->change;
+    }
+    std::optional<cv::Vec3f> quiet_color(cv::Point2f) const noexcept override { return row->quiet; }
 };
 
 struct Played {
     std::vector<core::StepResult> results;
     std::vector<std::vector<cv::Point2f>> estimated_at;  // per frame
     std::vector<std::vector<cv::Point2f>> painted_at;    // per frame
+    std::vector<bool> kept_quiet;                        // per frame
+    std::vector<bool> asked_change;                      // per frame
 };
 
 inline Event event_of(const core::StepResult& r) {
@@ -140,6 +154,8 @@ inline Played play(core::StateMachine& machine, const std::vector<Row>& rows) {
         played.results.push_back(result);
         played.estimated_at.push_back(script.estimated_at);
         played.painted_at.push_back(script.painted_at);
+        played.kept_quiet.push_back(script.kept_quiet);
+        played.asked_change.push_back(script.asked_change);
         before = &row.paint;
     }
     return played;

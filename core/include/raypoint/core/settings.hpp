@@ -188,6 +188,13 @@ struct TrackingSettings {
     // 17: 97.0%, 93.9%, 83.6% tracked to 100%. A target's first estimate is not recovered: from
     // the search's point a neighbour of its colour took desk and person clips to 0%.
     bool recover_small = true;
+    // A target that came in and stopped leaves nothing in the difference of two frames, so a
+    // search that missed it as it came in waits for movement that never comes (a hand lost as
+    // it entered, then held still for a click). After movement over the search threshold that
+    // left no target, once the movement has stayed at or under idle_threshold for
+    // change_seconds, SEARCHING picks the centre of mass of what differs from the last quiet
+    // frame before that movement. 0 = never, as in the paper.
+    double change_seconds = 0.1;
 };
 
 struct OutputSettings {

@@ -39,6 +39,19 @@ class FrameEvidence {
     virtual cv::Vec3f previous_color(cv::Point2f at) const noexcept = 0;
     // The target was dropped, or a new one picked: what estimate() kept about the old one goes.
     virtual void forget_target() noexcept {}
+    // TrackingSettings::change_seconds: this frame becomes the quiet scene; change() is the
+    // centre of mass of what differs from it, when that sums to more than `threshold` (the
+    // movement's units), and nothing without a quiet frame.
+    virtual void keep_quiet_frame() noexcept {}
+    virtual std::optional<cv::Point2f> change(double threshold) noexcept {
+        (void)threshold;
+        return std::nullopt;
+    }
+    // Mean BGR of the colour_patch square centred at `at` in the quiet frame, if one is kept.
+    virtual std::optional<cv::Vec3f> quiet_color(cv::Point2f at) const noexcept {
+        (void)at;
+        return std::nullopt;
+    }
 };
 
 // What one frame did to the state machine.
@@ -85,7 +98,15 @@ class StateMachine {
     bool held_back() noexcept;
     // Whether the target moved on from a pick not yet estimated; the pick then follows it.
     bool pick_moved_on() noexcept;
+    // TrackingSettings::change_seconds: what changed since the last quiet frame, once the scene
+    // is quiet again after movement; `keep` keeps this frame as the quiet one when nothing has
+    // moved since the last.
+    std::optional<cv::Point2f> quiet_change(bool keep) noexcept;
+    // Whether a target that is scenery was dropped for the change (a new pick this frame).
+    bool changed_elsewhere(const Estimate& estimate) noexcept;
     void pick(cv::Point2f at) noexcept;
+    // SEARCHING's pick: a new target at `at`, estimated from the next frame on.
+    void start_target(cv::Point2f at) noexcept;
     void drop_target(LossReason reason) noexcept;
     void accept(const Estimate& estimate) noexcept;
 
@@ -114,6 +135,10 @@ class StateMachine {
     Estimate candidate_;         // TRACKING's estimate, waiting for VALIDATING
     cv::Vec3f reference_color_;  // the target's colour the last time it moved
     bool estimated_ = false;     // the target has had an estimate accepted since it was picked
+    // TrackingSettings::change_seconds: movement over the search threshold since the last quiet
+    // frame was kept, and since when the movement has been at or under idle_threshold.
+    bool moved_since_quiet_ = false;
+    std::optional<Timestamp> quiet_since_;
 
     // The frame being stepped.
     Timestamp now_ = 0;
