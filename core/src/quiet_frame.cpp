@@ -22,45 +22,44 @@ std::optional<cv::Point2f> QuietFrame::change(const cv::Mat& color, double thres
         color.type() != CV_8UC3) {
         return std::nullopt;
     }
-    // Two passes over the pixels, no image: the histogram gives the offset and the sum, the
-    // second pass the centre of mass of what is over the offset.
-    const auto difference = [](const cv::Vec3b& a, const cv::Vec3b& b) {
-        int largest = 0;
-        for (int c = 0; c < 3; ++c)
-            largest = std::max(largest, std::abs(int{a[c]} - int{b[c]}));
-        return largest;
-    };
-    std::array<std::int64_t, 256> histogram{};
-    for (int y = 0; y < color.rows; ++y) {
-        const auto* now = color.ptr<cv::Vec3b>(y);
-        const auto* before = frame_.ptr<cv::Vec3b>(y);
-        for (int x = 0; x < color.cols; ++x)
-            ++histogram[static_cast<std::size_t>(difference(now[x], before[x]))];
-    }
-    int offset = 0;
-    int distinct = 0;
-    for (int value = 0; value < 256 && distinct < minima; ++value) {
-        if (histogram[static_cast<std::size_t>(value)] == 0) continue;
-        offset = value;
-        ++distinct;
-    }
-    double total = 0.0;
-    for (int value = offset + 1; value < 256; ++value)
-        total += static_cast<double>(histogram[static_cast<std::size_t>(value)]) * (value - offset);
-    if (total <= threshold) return std::nullopt;
-    double sum_x = 0.0;
-    double sum_y = 0.0;
+    // One pass over the pixels, no image: for each difference value its count and the sums of
+    // its pixels' x and y. The offset comes from the counts; what is over it weighs
+    // (value - offset), so the centre of mass is a sum over the values, not a second pass.
+    std::array<std::int64_t, 256> count{};
+    std::array<std::int64_t, 256> sum_x{};
+    std::array<std::int64_t, 256> sum_y{};
     for (int y = 0; y < color.rows; ++y) {
         const auto* now = color.ptr<cv::Vec3b>(y);
         const auto* before = frame_.ptr<cv::Vec3b>(y);
         for (int x = 0; x < color.cols; ++x) {
-            const int weight = difference(now[x], before[x]) - offset;
-            if (weight <= 0) continue;
-            sum_x += static_cast<double>(weight) * x;
-            sum_y += static_cast<double>(weight) * y;
+            int largest = 0;
+            for (int c = 0; c < 3; ++c)
+                largest = std::max(largest, std::abs(int{now[x][c]} - int{before[x][c]}));
+            const auto value = static_cast<std::size_t>(largest);
+            ++count[value];
+            sum_x[value] += x;
+            sum_y[value] += y;
         }
     }
-    return cv::Point2f(static_cast<float>(sum_x / total), static_cast<float>(sum_y / total));
+    int offset = 0;
+    int distinct = 0;
+    for (int value = 0; value < 256 && distinct < minima; ++value) {
+        if (count[static_cast<std::size_t>(value)] == 0) continue;
+        offset = value;
+        ++distinct;
+    }
+    double total = 0.0;
+    double moment_x = 0.0;
+    double moment_y = 0.0;
+    for (int value = offset + 1; value < 256; ++value) {
+        const auto v = static_cast<std::size_t>(value);
+        const auto weight = static_cast<double>(value - offset);
+        total += static_cast<double>(count[v]) * weight;
+        moment_x += static_cast<double>(sum_x[v]) * weight;
+        moment_y += static_cast<double>(sum_y[v]) * weight;
+    }
+    if (total <= threshold) return std::nullopt;
+    return cv::Point2f(static_cast<float>(moment_x / total), static_cast<float>(moment_y / total));
 }
 
 }  // namespace raypoint::core::detail
