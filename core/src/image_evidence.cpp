@@ -63,6 +63,15 @@ Estimate ImageEvidence::estimate(cv::Point2f inner) noexcept {
     return estimate;
 }
 
+Estimate ImageEvidence::look(cv::Point2f inner) noexcept {
+    const bool on_end = on_end_;
+    const Estimator::Memory memory = estimator_.memory();
+    const Estimate estimate = ImageEvidence::estimate(inner);
+    on_end_ = on_end;
+    estimator_.restore(memory);
+    return estimate;
+}
+
 // The end must hold a share of the scene's movement, and move at least as densely as the rest of
 // the region: a hand waves at the end of a sleeve that only follows it, while a still door a ball
 // touched on its way in is still near its far end even when the ball's movement is near enough

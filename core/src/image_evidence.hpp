@@ -24,6 +24,7 @@ class ImageEvidence final : public FrameEvidence {
     double movement_near(cv::Point2f centre, float radius) const noexcept override;
     std::optional<cv::Point2f> detect() noexcept override;
     Estimate estimate(cv::Point2f inner) noexcept override;
+    Estimate look(cv::Point2f inner) noexcept override;
     cv::Vec3f current_color(cv::Point2f at) const noexcept override {
         return patch_mean(images_.color(), at);
     }

@@ -16,6 +16,8 @@ class RasterEstimator final : public RayEstimatorBase {
     void use_color(const cv::Mat* color) noexcept override { color_ = color; }
     void use_magnitude(const Magnitude& magnitude) noexcept override { magnitude_ = magnitude; }
     void forget_target() noexcept override { last_fill_ = 0; }
+    Memory memory() const noexcept override { return last_fill_; }
+    void restore(Memory memory) noexcept override { last_fill_ = memory; }
 
   private:
     Estimate estimate_on(const cv::Mat& edges, cv::Point2f inner) noexcept;

@@ -152,7 +152,7 @@ bool StateMachine::changed_elsewhere(const Estimate& estimate) noexcept {
     const auto tolerance = static_cast<float>(settings_.color_tolerance);
     if (!before || color_distance(*before, evidence_->current_color(estimate.inner)) > tolerance)
         return false;
-    const Estimate there = evidence_->estimate(*found);
+    const Estimate there = evidence_->look(*found);
     result_.iterations += there.iterations;
     if (area_check(there.area) != LossReason::none) return false;
     // The same region: centroids a quarter of its size apart at most, areas within a factor 2.

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // EstimatorSettings::fill_growth: a refined fill that grows past fill_growth times the last
 // frame's fill of the same target has leaked, and is redone within the blocks the rays selected;
-// forget_target() starts a new target without that memory.
+// forget_target() starts a new target without that memory, and restore() puts it back after a
+// look at another region.
 
 #include <memory>
 
@@ -62,6 +63,32 @@ TEST(FillGrowth, ANewTargetHasNoLastFill) {
     checked->forget_target();
     const Estimate fresh = checked->estimate(leaking_disk(), {60, 60});
     EXPECT_DOUBLE_EQ(fresh.area, estimator(0.0)->estimate(leaking_disk(), {60, 60}).area);
+}
+
+// A look at another, larger region (a possible switch of target) is put back: the target's next
+// leak is cut as if the look had not happened. Without the restore the larger fill lets it by.
+TEST(FillGrowth, ALookElsewhereLeavesTheTargetsLastFill) {
+    cv::Mat both = disk();
+    cv::rectangle(both, cv::Rect(100, 10, 50, 100), edge, 2);  // 2.4x the leak's area
+    const auto restored = estimator(1.75);
+    const auto forgotten = estimator(1.75);
+    restored->estimate(disk(), {60, 60});
+    forgotten->estimate(disk(), {60, 60});
+    const Estimator::Memory memory = restored->memory();
+    EXPECT_GT(memory, 0U);
+    restored->estimate(both, {125, 60});
+    forgotten->estimate(both, {125, 60});
+    EXPECT_GT(restored->memory(), memory);
+    restored->restore(memory);
+    EXPECT_EQ(restored->memory(), memory);
+    const Estimate cut = restored->estimate(leaking_disk(), {60, 60});
+    const Estimate leaked = forgotten->estimate(leaking_disk(), {60, 60});
+    EXPECT_LT(cut.area, leaked.area - 50.0);
+    EXPECT_DOUBLE_EQ(cut.area, [] {
+        const auto fresh = estimator(1.75);
+        fresh->estimate(disk(), {60, 60});
+        return fresh->estimate(leaking_disk(), {60, 60}).area;
+    }());
 }
 
 }  // namespace

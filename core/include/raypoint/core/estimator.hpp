@@ -5,6 +5,7 @@
 // and move the inner point to where it is likeliest to stay inside in the next frame.
 
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <string_view>
 #include <utility>
@@ -74,6 +75,12 @@ class Estimator {
     // The target was dropped or a new one picked: what the estimator kept from the last frame's
     // estimate (EstimatorSettings::fill_growth) goes.
     virtual void forget_target() noexcept {}
+    // What estimate() carries to the next frame's estimate of the same target (the refined
+    // fill's size, EstimatorSettings::fill_growth). A look at another region that may not be
+    // taken (a possible switch of target) restores it afterwards.
+    using Memory = std::size_t;
+    virtual Memory memory() const noexcept { return 0; }
+    virtual void restore(Memory memory) noexcept { (void)memory; }
 };
 
 std::unique_ptr<Estimator> make_estimator(const EstimatorSettings& settings);

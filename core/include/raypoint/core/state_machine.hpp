@@ -34,6 +34,9 @@ class FrameEvidence {
     // SEARCHING: the centre of mass of the difference image, if it has any mass.
     virtual std::optional<cv::Point2f> detect() noexcept = 0;
     virtual Estimate estimate(cv::Point2f inner) noexcept = 0;
+    // The same estimate, leaving what estimate() carries to the tracked target's next one as it
+    // was: a look at a region that may not become the target.
+    virtual Estimate look(cv::Point2f inner) noexcept { return estimate(inner); }
     // Mean BGR of the colour_patch square centred at `at`, in this frame or the previous one.
     virtual cv::Vec3f current_color(cv::Point2f at) const noexcept = 0;
     virtual cv::Vec3f previous_color(cv::Point2f at) const noexcept = 0;
