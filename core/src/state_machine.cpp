@@ -162,9 +162,7 @@ bool StateMachine::changed_elsewhere(const Estimate& estimate) noexcept {
         std::hypot(there.centroid.x - estimate.centroid.x, there.centroid.y - estimate.centroid.y);
     if (apart <= 0.25 * std::sqrt(larger) && smaller >= 0.5 * larger) return false;
     // A switch, not a loss: the frame has a target, picked where the change is.
-    drop_target(LossReason::elsewhere);
-    result_.lost = false;
-    result_.loss = LossReason::none;
+    forget_target();
     start_target(*found);
     return true;
 }
@@ -372,15 +370,19 @@ bool StateMachine::moving_elsewhere(const Estimate& estimate) noexcept {
 }
 
 void StateMachine::drop_target(LossReason reason) noexcept {
+    forget_target();
     state_ = TrackerState::searching;
     result_.loss = reason;
+    result_.has_target = false;
+    result_.lost = true;
+}
+
+void StateMachine::forget_target() noexcept {
     still_since_.reset();
     elsewhere_since_.reset();
     none_around_ = false;
     owned_motion_at_.reset();
     held_since_.reset();
-    result_.has_target = false;
-    result_.lost = true;
     estimated_ = false;
     evidence_->forget_target();
 }

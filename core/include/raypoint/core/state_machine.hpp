@@ -110,7 +110,10 @@ class StateMachine {
     void pick(cv::Point2f at) noexcept;
     // SEARCHING's pick: a new target at `at`, estimated from the next frame on.
     void start_target(cv::Point2f at) noexcept;
+    // The target is lost for `reason`: SEARCHING from the next frame.
     void drop_target(LossReason reason) noexcept;
+    // What the tracker kept about the target goes (a loss, or a switch to another pick).
+    void forget_target() noexcept;
     void accept(const Estimate& estimate) noexcept;
 
     TrackingSettings settings_;
