@@ -54,6 +54,23 @@ TEST(QuietFrame, TheChangeIsTheCentreOfWhatCameIn) {
     EXPECT_FALSE(quiet.change(working(small), 9600.0, 10));
 }
 
+// An arm bent at the elbow: its centre of mass lies in the crook, on the wall. The pick must be on
+// the arm itself.
+TEST(QuietFrame, TheChangeIsOnWhatCameInWhereItsCentreOfMassIsNot) {
+    detail::QuietFrame quiet;
+    quiet.keep(working(wall(1)));
+    cv::Mat frame = wall(2);
+    const cv::Scalar skin(120, 150, 200);
+    cv::rectangle(frame, cv::Rect(200, 120, 280, 70), skin, cv::FILLED);  // forearm
+    cv::rectangle(frame, cv::Rect(410, 120, 70, 280), skin, cv::FILLED);  // upper arm
+    const auto found = quiet.change(working(frame), 9600.0, 10);
+    ASSERT_TRUE(found);
+    const cv::Point2f full(found->x * 4.0F + 2.0F, found->y * 4.0F + 2.0F);  // 640x480 pixels
+    const bool forearm = cv::Rect(200, 120, 280, 70).contains(full);
+    const bool upper = cv::Rect(410, 120, 70, 280).contains(full);
+    EXPECT_TRUE(forearm || upper) << full;
+}
+
 TEST(QuietFrame, TheSameSceneOrItAllBrighterIsNoChange) {
     detail::QuietFrame quiet;
     quiet.keep(working(wall(1)));
