@@ -125,6 +125,11 @@ INSTANTIATE_TEST_SUITE_P(
                       Expectation{"desk", 0.98, 1.5, std::nullopt, 0.5, 13},
                       Expectation{"desk", 0.98, 1.5, std::nullopt, 0.5, 17},
                       Expectation{"person", 0.98, 1.5, std::nullopt, 0.5, 13},
+                      // Measured 2026-11-28, the skin-coloured wall at its own seed: lost
+                      // twice as the hand comes in, then picked at the deepest pixel of the
+                      // change 0.1 s into the quiet (scored from the rendered video: 100% /
+                      // 0.16 px).
+                      Expectation{"skinwall", 0.98, 1.5, std::nullopt},
                       // The camera presets at other seeds, measured 2026-11-27, all 100%
                       // (cerr px at seeds 7, 11, 13, 17): drift 0.21, 0.38, 0.35, 0.20; skew
                       // 0.16, 0.49, 0.36, 0.20; flicker 0.23, 0.64, 0.36, 0.19.
