@@ -162,16 +162,13 @@ bool StateMachine::changed_elsewhere(const Estimate& estimate) noexcept {
         std::hypot(there.centroid.x - estimate.centroid.x, there.centroid.y - estimate.centroid.y);
     if (apart <= 0.25 * std::sqrt(larger) && smaller >= 0.5 * larger) return false;
     // A switch, not a loss: the frame has a target, picked where the change is.
-    forget_target();
     start_target(*found);
     return true;
 }
 
 void StateMachine::start_target(cv::Point2f at) noexcept {
-    evidence_->forget_target();
+    forget_target();
     pick(at);
-    still_since_.reset();
-    owned_motion_at_.reset();
     picked_at_ = now_;
     state_ = TrackerState::tracking;
 }

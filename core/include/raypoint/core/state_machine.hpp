@@ -108,7 +108,8 @@ class StateMachine {
     // Whether a target that is scenery was dropped for the change (a new pick this frame).
     bool changed_elsewhere(const Estimate& estimate) noexcept;
     void pick(cv::Point2f at) noexcept;
-    // SEARCHING's pick: a new target at `at`, estimated from the next frame on.
+    // A new target at `at` (SEARCHING's pick, or a switch from a target that is scenery),
+    // estimated from the next frame on; what was kept about any old one goes.
     void start_target(cv::Point2f at) noexcept;
     // The target is lost for `reason`: SEARCHING from the next frame.
     void drop_target(LossReason reason) noexcept;
