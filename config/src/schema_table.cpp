@@ -98,6 +98,11 @@ const std::vector<Key>& schema() {
                 "estimator", "fill_growth", 0.0, 100.0,
                 "refined fill larger than this times the last frame's has leaked (0: no check)",
                 [](auto& c) -> auto& { return c.core.estimator.fill_growth; }),
+            integer_key(
+                "estimator", "neck_radius", 0, 8,
+                "refined: the region loses what lies beyond a neck narrower than 2 x this + 1 "
+                "working pixels (0: never)",
+                [](auto& c) -> auto& { return c.core.estimator.neck_radius; }),
             real_key(
                 "estimator", "extremity", 0.0, 1.0,
                 "refined: a region crossing the border keeps its part beyond this share of its "

@@ -43,6 +43,13 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     on_border_.assign(2 * (static_cast<std::size_t>(width_) + static_cast<std::size_t>(height_)),
                       0);
     queue_.assign(pixels, cv::Point());
+    marks_.assign(pixels, 0);
+    run_.assign(pixels, 0);
+    column_counts_.assign(static_cast<std::size_t>(width_), 0);
+    // At most one run every two pixels of a row.
+    runs_.assign(static_cast<std::size_t>(height_) * (static_cast<std::size_t>(width_) / 2 + 1),
+                 Run{});
+    work_.assign(pixels, cv::Point());
 }
 
 // A pixel's block is selected for the pixel's first visit, so later visits change nothing. The
@@ -199,6 +206,7 @@ void RasterEstimator::refine(const cv::Mat& edges, Estimate& estimate) noexcept 
         estimate.leaked = true;
         fill(edges, true, static_cast<double>(filled_.size()));
     }
+    cut_necks(estimate.inner);
     last_fill_ = queued_;
     // Integer sums: each partial sum is an integer under 2^53, so summing in double gives
     // the same values.

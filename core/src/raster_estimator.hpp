@@ -37,6 +37,13 @@ class RasterEstimator final : public RayEstimatorBase {
         return static_cast<unsigned>(pixel.x) < static_cast<unsigned>(width_) &&
                static_cast<unsigned>(pixel.y) < static_cast<unsigned>(height_);
     }
+    // EstimatorSettings::neck_radius: the filled region loses what lies beyond a narrow neck.
+    void cut_necks(cv::Point2f inner) noexcept;
+    void morph(unsigned char from_bit, unsigned char to_bit, bool erode, int r, int x0, int y0,
+               int x1, int y1) noexcept;
+    void clear_marks(int x0, int y0, int x1, int y1) noexcept;
+    std::size_t root(std::size_t run) noexcept;
+    void unite(std::size_t a, std::size_t b) noexcept;
     void add_edge_band(const cv::Mat& edges, double& area, double& sum_x, double& sum_y) noexcept;
     // EstimatorSettings::extremity: a region that crosses the image border keeps its far end.
     void keep_extremity(Estimate& estimate, std::size_t inside_count) noexcept;
@@ -77,6 +84,20 @@ class RasterEstimator final : public RayEstimatorBase {
     // refine(): the first queued_ slots are the reached pixels, in order of reaching; a pixel is
     // queued at most once, so one slot a pixel always suffices.
     std::vector<cv::Point> queue_;
+    // cut_necks(): bit marks a pixel (clear outside its call), a row pass's result, and a
+    // queue of pixels, each sized to the image.
+    std::vector<unsigned char> marks_;
+    std::vector<unsigned char> run_;
+    std::vector<int> column_counts_;
+    // cut_necks(): runs of the core along the rows, [begin, end) on row y, joined by union-find.
+    struct Run {
+        int y;
+        int begin;
+        int end;
+        std::size_t parent;
+    };
+    std::vector<Run> runs_;
+    std::vector<cv::Point> work_;
     std::size_t queued_ = 0;
 };
 
