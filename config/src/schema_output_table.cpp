@@ -200,6 +200,11 @@ std::vector<Key> output_keys() {
             "for this many seconds after a step of the region taken out of the depth signal, "
             "a held push's hold counts from where the position is (0 = off)",
             [](auto& c) -> auto& { return c.core.pointer.click.hold_settle_seconds; }),
+        real_key(
+            "click", "hold_flicker_seconds", 0.0, 1.0,
+            "a held push's size is its largest over this many seconds, so the region losing a "
+            "piece for a frame or two leaves it still (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.hold_flicker_seconds; }),
         // [dwell] click.mode = dwell
         real_key(
             "dwell", "seconds", 0.0, 60.0, "the cursor held still this many seconds clicks",

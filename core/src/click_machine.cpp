@@ -174,6 +174,8 @@ void ClickMachine::confirm() noexcept {
         held_at_ = where_;
         still_scale_ = scale_;
         still_since_ = now_;
+        peak_held_ = scale_;
+        peak_held_at_ = now_;
     } else {
         state_ = ClickState::pressed;
         press_left();
@@ -300,9 +302,14 @@ void ClickMachine::on_holding() noexcept {
     }
     if (moved_while_held()) return;
     // Still in size too: a slow push still growing, or one that already comes back, is not a
-    // held push.
-    if (std::abs(scale_ / still_scale_ - 1.0) > settings_.hold_rise) {
-        still_scale_ = scale_;
+    // held push. The size is the peak of the last hold_flicker_seconds: a region that drops a
+    // piece for a frame is as still as its hand.
+    if (scale_ >= peak_held_ || seconds_since(peak_held_at_) > settings_.hold_flicker_seconds) {
+        peak_held_ = scale_;
+        peak_held_at_ = now_;
+    }
+    if (std::abs(peak_held_ / still_scale_ - 1.0) > settings_.hold_rise) {
+        still_scale_ = peak_held_;
         still_since_ = now_;
     }
     if (settings_.right_seconds > 0.0) {

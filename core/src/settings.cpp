@@ -47,6 +47,7 @@ Settings paper_settings() {
     click.settle_seconds = 0.0;
     click.hold_settle_seconds = 0.0;
     click.hold_rise = 0.05;
+    click.hold_flicker_seconds = 0.0;
     return settings;
 }
 

@@ -46,6 +46,39 @@ TEST(ClickGestures, APushHeldStillRightClicks) {
     // clang-format on
 }
 
+TEST(ClickGestures, ARegionFlickeringWhileHeldIsStill) {
+    // The tracker's region of a held hand drops a piece every other frame: 4% of the size,
+    // over hold_rise (3%). Its largest size within hold_flicker_seconds (0.1 s) is still for
+    // 0.5 s: a right click. Sized frame by frame (0), each flicker restarts the stillness and
+    // the pull-back left-clicks.
+    // clang-format off
+    const std::vector<test::PointerRow> flicker = {
+        {   0,   T,       0.0,   0.0,   picked, "inactive",      ""},
+        { 200,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 300,   T,       0.500, 0.500, 0.200,  "idle",          ""},
+        { 400,   T,       0.500, 0.500, 0.230,  "rising",        ""},
+        { 500,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        { 600,   T,       0.500, 0.500, 0.240,  "holding",       ""},   // -4%
+        { 700,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        { 800,   T,       0.500, 0.500, 0.240,  "holding",       ""},
+        { 900,   T,       0.500, 0.500, 0.250,  "holding",       ""},
+        {1000,   T,       0.500, 0.500, 0.240,  "right_armed",   ""},   // 0.5 s at 0.250
+        {1100,   T,       0.500, 0.500, 0.250,  "right_armed",   ""},
+        {1200,   T,       0.500, 0.500, 0.215,  "refractory",    "+right -right"},
+    };
+    // clang-format on
+    PointerController pointer(gestures(), aspect);
+    play(pointer, flicker);
+    PointerSettings framewise = gestures();
+    framewise.click.hold_flicker_seconds = 0.0;
+    PointerController by_frame(framewise, aspect);
+    std::vector<test::PointerRow> left = flicker;
+    left[9].click = "holding";
+    left[10].click = "holding";
+    left[11].out = "+left -left";
+    play(by_frame, left);
+}
+
 TEST(ClickGestures, AHeldPushThatRestsBeforeMovingStillDrags) {
     // Still for 0.6 s (right click armed), then moved sideways: a drag, not a right click. A
     // hand often rests a moment before it starts to drag.

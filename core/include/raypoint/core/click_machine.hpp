@@ -153,6 +153,11 @@ class ClickMachine {
     cv::Point2d held_at_;
     double still_scale_ = 0.0;
     Timestamp still_since_ = 0;
+    // HOLDING: the largest size within hold_flicker_seconds, as a peak held until that long
+    // after it was seen or a larger one comes (a flicker's large shape comes back within a
+    // frame or two), and when it was seen.
+    double peak_held_ = 0.0;
+    Timestamp peak_held_at_ = 0;
     double scroll_y_ = 0.0;  // SCROLLING: y of the previous frame
     // The last frame on which the depth signal took a step out (settle_seconds).
     std::optional<Timestamp> absorbed_at_;

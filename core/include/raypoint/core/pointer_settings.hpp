@@ -183,6 +183,15 @@ struct ClickSettings {
     // 262, and left clicks taken for another gesture 34 to 26 of 1650; 0.5 s lost scrolls
     // (docs/clicks.md). 0: off.
     double hold_settle_seconds = 0.3;
+    // A held push's size, for hold_rise, is its largest within this many seconds: the tracker's
+    // region of a still hand flickers between two shapes, a piece (a finger, the shadow under
+    // it) in one frame and out the next, 4% of sqrt(area) on the gesture set's cluttered
+    // clips, and each flicker restarted right_seconds until the pull-back left-clicked. On the
+    // gesture set's seeds 1-5 (right_seconds 0.6): 0.1 s took right clicks from 265 to 268 of
+    // 300 and right clicks taken for a left click from 6 to 3, left clicks taken for another
+    // gesture from 12 to 17 of 1650; 0.15 s 269 and 22, 0.2 s 266 and 32; seeds 6 and 7, which
+    // chose nothing: 115 to 116 of 120, 5 to 6 (docs/clicks.md). 0 = the size of the frame.
+    double hold_flicker_seconds = 0.1;
 };
 
 // [dwell], click.mode = dwell.
