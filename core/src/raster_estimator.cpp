@@ -43,13 +43,16 @@ void RasterEstimator::resize(const cv::Mat& edges) {
     on_border_.assign(2 * (static_cast<std::size_t>(width_) + static_cast<std::size_t>(height_)),
                       0);
     queue_.assign(pixels, cv::Point());
-    marks_.assign(pixels, 0);
-    run_.assign(pixels, 0);
-    column_counts_.assign(static_cast<std::size_t>(width_), 0);
-    // At most one run every two pixels of a row.
-    runs_.assign(static_cast<std::size_t>(height_) * (static_cast<std::size_t>(width_) / 2 + 1),
-                 Run{});
-    work_.assign(pixels, cv::Point());
+    // cut_necks()'s buffers, only when it runs (EstimatorSettings::neck_radius, off by default).
+    if (settings_.neck_radius > 0) {
+        marks_.assign(pixels, 0);
+        run_.assign(pixels, 0);
+        column_counts_.assign(static_cast<std::size_t>(width_), 0);
+        // At most one run every two pixels of a row.
+        runs_.assign(static_cast<std::size_t>(height_) * (static_cast<std::size_t>(width_) / 2 + 1),
+                     Run{});
+        work_.assign(pixels, cv::Point());
+    }
 }
 
 // A pixel's block is selected for the pixel's first visit, so later visits change nothing. The

@@ -21,23 +21,20 @@ constexpr unsigned char near_other = 8;
 }  // namespace
 
 // Erodes `from_bit` of marks_ by a square of half-side r into `to_bit` (every pixel of the square
-// has from_bit; pixels off the image count as having it, so a region crossing the border keeps
-// its core there), or dilates it (any pixel of the square has it), over the box [x0, x1) x
-// [y0, y1), outside which no pixel has from_bit. Separable, with running counts: a row pass into
+// has from_bit), or dilates it (any pixel of the square has it), over the box [x0, x1) x
+// [y0, y1), outside which no pixel has from_bit (nor does any off the image: cut_necks() leaves
+// regions that reach the border alone). Separable, with running counts: a row pass into
 // run_, then a column pass, a few instructions a pixel whatever r.
 void RasterEstimator::morph(unsigned char from_bit, unsigned char to_bit, bool erode, int r, int x0,
                             int y0, int x1, int y1) noexcept {
     const int w = width_;
-    const int h = height_;
     const int full = 2 * r + 1;
     unsigned char* const marks = marks_.data();
     unsigned char* const run = run_.data();
-    const int outside = erode ? 1 : 0;
     for (int y = y0; y < y1; ++y) {
         const unsigned char* row = marks + static_cast<std::ptrdiff_t>(y) * w;
         unsigned char* out = run + static_cast<std::ptrdiff_t>(y) * w;
         const auto has = [&](int x) {
-            if (x < 0 || x >= w) return outside;
             if (x < x0 || x >= x1) return 0;
             return (row[x] & from_bit) != 0 ? 1 : 0;
         };
@@ -51,7 +48,6 @@ void RasterEstimator::morph(unsigned char from_bit, unsigned char to_bit, bool e
     }
     int* const counts = column_counts_.data();
     const auto has = [&](int x, int y) {
-        if (y < 0 || y >= h) return outside;
         if (y < y0 || y >= y1) return 0;
         return static_cast<int>(run[static_cast<std::ptrdiff_t>(y) * w + x]);
     };
