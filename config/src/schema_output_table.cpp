@@ -143,6 +143,11 @@ std::vector<Key> output_keys() {
             "this share of its jump (1 = exactly back): it was a push whose frame blurred",
             [](auto& c) -> auto& { return c.core.pointer.click.glitch_return; }),
         real_key(
+            "click", "glitch_return_seconds", 0.0, 1.0,
+            "a step taken out may be given back on any frame this long after it, not only the "
+            "next, when the centroid comes back (0 = the next frame only)",
+            [](auto& c) -> auto& { return c.core.pointer.click.glitch_return_seconds; }),
+        real_key(
             "click", "push_travel", 0.0, 10.0,
             "while a push rises, the position may move this many times the target's size; "
             "farther it is an approach while moving, not a push (0 = off)",

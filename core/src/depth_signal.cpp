@@ -14,6 +14,10 @@ void DepthSignal::reset() noexcept {
     absorbed_ = false;
 }
 
+bool DepthSignal::returned(cv::Point2d centroid) const noexcept {
+    return cv::norm(centroid - before_centroid_) <= (1.0 - settings_.glitch_return) * before_jump_;
+}
+
 std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point2d centroid,
                                           Timestamp timestamp, double light_change) noexcept {
     const Timestamp previous_time = previous_time_;
@@ -25,12 +29,24 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         reset();
         return std::nullopt;
     }
-    const bool pending = pending_;
-    pending_ = false;
-    if (pending &&
-        cv::norm(centroid - before_centroid_) <= (1.0 - settings_.glitch_return) * before_jump_) {
+    // The step absorbed on the frame before, or within glitch_return_seconds before.
+    const bool next = pending_ && !pending_seen_;
+    const bool later =
+        pending_ && pending_seen_ &&
+        static_cast<double>(timestamp - pending_time_) <= settings_.glitch_return_seconds * 1e6;
+    pending_ = next || later;
+    pending_seen_ = true;
+    if (next && returned(centroid)) {
         gain_ = before_gain_;  // the centroid is back: whatever the size does now is the target's
         given_back_ = true;
+        pending_ = false;
+    } else if (later && returned(centroid) && previous_ > 0.0 && (*scale < previous_) == rose_) {
+        // The piece has left again, frames later: its step is taken out as its arrival was.
+        // Not given back: the push may have gone on meanwhile, and a region that keeps a piece
+        // can still bring its centroid back.
+        gain_ *= previous_ / *scale;
+        absorbed_ = true;
+        pending_ = false;
     } else if (previous_ > 0.0 && (settings_.glitch_jump > 0.0 || settings_.glitch_leap > 0.0 ||
                                    settings_.glitch_light > 0.0)) {
         const double step = *scale / previous_ - 1.0;
@@ -60,6 +76,9 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
             // Given back when the centroid comes back: only a step whose centroid jumped can
             // show that it was the centroid's alone (a still centroid is always "back").
             pending_ = shifted;
+            pending_seen_ = false;
+            rose_ = step > 0.0;
+            pending_time_ = timestamp;
             before_centroid_ = previous_centroid_;
             before_gain_ = gain_;
             before_jump_ = moved;

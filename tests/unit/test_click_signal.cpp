@@ -187,6 +187,56 @@ TEST(DepthSignal, AStepIsGivenBackOnlyWhenTheCentroidComesMostOfTheWayBack) {
     EXPECT_TRUE(blurred.given_back());
 }
 
+TEST(DepthSignal, ALeakThatClosesFramesLaterIsTakenOutAsItsOpeningWas) {
+    // A push under way takes in a strip of the background (+14%, the centroid 0.14 of the
+    // size away), keeps it a frame, then drops it (-6%) with the centroid back. Within
+    // glitch_return_seconds the drop is taken out as the strip's arrival was and the push's
+    // level stands; with 0 only the next frame could give the step back, and the drop is a
+    // 6% dip, over push_dip.
+    const cv::Point2d here(0.5, 0.4);
+    const cv::Point2d beside = here + cv::Point2d(0.03, 0);
+    const cv::Point2d back = here + cv::Point2d(0.002, 0);
+    constexpr Timestamp frame = 33'333;
+    for (const double window : {0.0, 0.1}) {
+        ClickSettings click = glitches().click;
+        click.glitch_return_seconds = window;
+        DepthSignal signal(click);
+        signal.update(0.20, here, 0);
+        signal.update(0.21, here, frame);
+        EXPECT_NEAR(*signal.update(0.24, beside, 2 * frame), 0.21, 1e-12);
+        EXPECT_TRUE(signal.absorbed());
+        EXPECT_NEAR(*signal.update(0.25, beside, 3 * frame), 0.21875, 1e-12);
+        EXPECT_FALSE(signal.given_back());
+        const double level = *signal.update(0.235, back, 4 * frame);
+        if (window > 0.0) {
+            EXPECT_NEAR(level, 0.21875, 1e-12);
+            EXPECT_TRUE(signal.absorbed());
+        } else {
+            EXPECT_NEAR(level, 0.235 * 0.21 / 0.24, 1e-12);
+            EXPECT_FALSE(signal.absorbed());
+        }
+    }
+}
+
+TEST(DepthSignal, ARegionThatKeepsItsPieceWithTheCentroidBackIsNotTakenOutAgain) {
+    // The same strip, but the region grows on with the centroid back: the piece is still in
+    // (a region can bring its centroid back and keep it), and the push goes on from the level
+    // with the strip taken out.
+    ClickSettings click = glitches().click;
+    click.glitch_return_seconds = 0.1;
+    const cv::Point2d here(0.5, 0.4);
+    constexpr Timestamp frame = 33'333;
+    DepthSignal signal(click);
+    signal.update(0.20, here, 0);
+    signal.update(0.21, here, frame);
+    signal.update(0.24, here + cv::Point2d(0.03, 0), 2 * frame);
+    signal.update(0.25, here + cv::Point2d(0.03, 0), 3 * frame);
+    EXPECT_NEAR(*signal.update(0.26, here + cv::Point2d(0.002, 0), 4 * frame), 0.26 * 0.21 / 0.24,
+                1e-12);
+    EXPECT_FALSE(signal.absorbed());
+    EXPECT_FALSE(signal.given_back());
+}
+
 TEST(DepthSignal, ACentroidJumpCountsPerThirtiethOfASecond) {
     // glitch_jump 0.1: 0.03 frame widths is 0.15 of a size of 0.2, a jump 1/30 s after the
     // last frame; 0.1 s after it, three frames' worth of a push's own drift, it is not.

@@ -9,7 +9,9 @@
 // When the centroid is back where it was on the next frame (glitch_return of the way), the
 // step is given back: the size that stays up with the centroid back in place is a push whose
 // frame blurred (at 10 fps a push of 0.25 s is one frame), and a size back too was a one-frame
-// glitch. A step faster than any push (glitch_leap per 1/30 s), and a step of glitch_step on a
+// glitch. A piece that leaves again later, within glitch_return_seconds, the size stepping
+// back the other way with the centroid back, has that step absorbed too: the push's level
+// stands. A step faster than any push (glitch_leap per 1/30 s), and a step of glitch_step on a
 // frame whose light jumped (glitch_light), are absorbed whatever the centroid does, and never
 // given back.
 // Pure: no allocation, no exceptions.
@@ -47,6 +49,10 @@ class DepthSignal {
     void reset() noexcept;
 
   private:
+    // Whether the centroid is back glitch_return of its jump from where it was before the
+    // pending step.
+    bool returned(cv::Point2d centroid) const noexcept;
+
     ClickSettings settings_;
     double previous_ = 0.0;        // the raw scale of the previous frame; 0: none
     Timestamp previous_time_ = 0;  // the previous frame's timestamp
@@ -56,6 +62,9 @@ class DepthSignal {
     // the centroid is back the next frame, the jump was the centroid's alone (a blurred
     // frame, at 10 fps a push's own frame) and the step is given back.
     bool pending_ = false;
+    bool pending_seen_ = false;   // the frame after the step has been seen
+    Timestamp pending_time_ = 0;  // the step's frame
+    bool rose_ = false;           // the step was up
     cv::Point2d before_centroid_;
     double before_gain_ = 1.0;
     double before_jump_ = 0.0;  // the centroid's jump with the step, frame widths
