@@ -40,7 +40,7 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         gain_ = before_gain_;  // the centroid is back: whatever the size does now is the target's
         given_back_ = true;
         pending_ = false;
-    } else if (later && returned(centroid) && previous_ > 0.0 && (*scale < previous_) == rose_) {
+    } else if (later && returned(centroid) && (*scale < previous_) == rose_) {
         // The piece has left again, frames later: its step is taken out as its arrival was.
         // Not given back: the push may have gone on meanwhile, and a region that keeps a piece
         // can still bring its centroid back.

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
-// The depth signal (depth_signal.hpp), the settling after its steps (settle_seconds) and the
-// push model (push_travel, push_dip) as transcripts (test_pointer_transcript.hpp): 10 fps rows in,
-// the click state and the device command out. The transcripts' centroid is the row's x, y, as the
-// smoothed position is. Settings: those of test_click_machine.cpp (start 5%, press 20%, release
-// 10%, push 0.35 s, no hold, a constant baseline) with, in each test, the part under test on.
+// The depth signal (depth_signal.hpp) and the settling after its steps (settle_seconds) as
+// transcripts (test_pointer_transcript.hpp): 10 fps rows in, the click state and the device
+// command out. The transcripts' centroid is the row's x, y, as the smoothed position is.
+// Settings: those of test_click_machine.cpp (start 5%, press 20%, release 10%, push 0.35 s, no
+// hold, a constant baseline) with, in each test, the part under test on.
 
 #include <gtest/gtest.h>
 
@@ -322,126 +322,6 @@ TEST(DepthSignal, OffPassesTheScaleThrough) {
     EXPECT_DOUBLE_EQ(*signal.update(0.20, {0.5, 0.4}), 0.20);
     EXPECT_DOUBLE_EQ(*signal.update(0.34, {0.3, 0.4}), 0.34);
     EXPECT_FALSE(signal.absorbed());
-}
-
-TEST(PushModel, AnApproachCarriedSidewaysIsNotAPush) {
-    // push_travel 0.1: the position may move 0.1 of the size (0.02 frame widths here) while
-    // the push rises. The hand comes 22% closer while moving 0.06 frame widths: an approach.
-    PointerSettings settings = depth();
-    settings.click.push_travel = 0.1;
-    PointerController pointer(settings, aspect);
-    // clang-format off
-    play(pointer, {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.51, 0.5,  0.215,  "rising",     "rel -10 0"},
-        { 500,   T,       0.53, 0.5,  0.230,  "drifting",   "rel -20 0"},  // 0.03 > 0.02
-        { 600,   T,       0.56, 0.5,  0.245,  "drifting",   "rel -30 0"},  // no press
-    });
-    // clang-format on
-    // The same push in place presses.
-    PointerController still(settings, aspect);
-    // clang-format off
-    play(still, {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.51, 0.5,  0.215,  "rising",     "rel -10 0"},
-        { 500,   T,       0.515,0.5,  0.230,  "rising",     "rel -5 0"},
-        { 600,   T,       0.515,0.5,  0.245,  "pressed",    "rel 15 0 +left"},  // undone
-    });
-    // clang-format on
-}
-
-TEST(PushModel, TheTravelIsAgainstTheTargetsOwnSize) {
-    // push_travel 0.1 after a step the signal took out: the target's size is 0.27, the signal's
-    // 0.2. A push that moves the position 0.025 frame widths is within 0.1 of the target's size
-    // (0.027) and presses; against the signal's (0.02) it would be an approach.
-    PointerSettings settings = glitches();
-    settings.click.push_travel = 0.1;
-    PointerController pointer(settings, aspect);
-    // clang-format off
-    play(pointer, {
-        //  ms   tracker  x     y     size    click         out
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.56, 0.5,  0.270,  "idle",       "rel -60 0"},  // absorbed
-        { 500,   T,       0.56, 0.5,  0.270,  "idle",       ""},
-        { 600,   T,       0.56, 0.5,  0.270,  "idle",       ""},
-        { 700,   T,       0.585,0.5,  0.310,  "rising",     "rel -25 0"},  // +15%
-        { 800,   T,       0.585,0.5,  0.340,  "pressed",    "rel 25 0 +left"},
-    });
-    // clang-format on
-}
-
-TEST(PushModel, ARiseWhoseCentroidJumpsDoesNotPress) {
-    // press_hold_seconds 0.03 at 30 fps: a hand setting off on a swipe smears into a trail,
-    // +25% with the centroid still, then jumps away 0.24 of its size a frame. The frames that
-    // jump never hold the press. The same rise in place presses on its second frame.
-    PointerSettings settings = glitches();
-    settings.click.press_hold_seconds = 0.03;
-    PointerController pointer(settings, aspect);
-    // clang-format off
-    play(pointer, {
-        //  ms   tracker  x     y     size    click         out
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 334,   T,       0.5,  0.5,  0.250,  "rising",     ""},           // +25%
-        { 367,   T,       0.56, 0.5,  0.250,  "rising",     "rel -60 0"},  // jumps: no press
-        { 400,   T,       0.62, 0.5,  0.250,  "rising",     "rel -60 0"},
-    });
-    PointerController still(settings, aspect);
-    play(still, {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 334,   T,       0.5,  0.5,  0.250,  "rising",     ""},
-        { 367,   T,       0.5,  0.5,  0.250,  "pressed",    "+left"},
-    });
-    // clang-format on
-}
-
-TEST(PushModel, ARiseThatFallsBackIsNotAPush) {
-    // push_dip 0.05: the bob of a step raises the size and drops it again; a push keeps
-    // growing. Drifting until the rise is back under start_rise.
-    PointerSettings settings = depth();
-    settings.click.push_dip = 0.05;
-    PointerController pointer(settings, aspect);
-    // clang-format off
-    play(pointer, {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.5,  0.5,  0.230,  "rising",     ""},   // +15%
-        { 500,   T,       0.5,  0.5,  0.216,  "drifting",   ""},   // 6% under its largest
-        { 600,   T,       0.5,  0.5,  0.250,  "drifting",   ""},   // +25%: no press
-        { 700,   T,       0.5,  0.5,  0.205,  "idle",       ""},   // back: +2.5%
-    });
-    // clang-format on
-}
-
-TEST(PushModel, AQuickPushAtTenFpsPressesOnItsFirstFrameBack) {
-    // press_hold_seconds 0.05 at 10 fps: the rise must be at the press on two frames. A push of
-    // 0.2 s in and straight back is at the press on its last frame in and its first frame back,
-    // which is also 6% under its largest: held at the press, it presses before the dip counts.
-    PointerSettings settings = depth();
-    settings.click.push_dip = 0.05;
-    settings.click.press_hold_seconds = 0.05;
-    PointerController pointer(settings, aspect);
-    // clang-format off
-    play(pointer, {
-        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
-        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
-        { 400,   T,       0.5,  0.5,  0.260,  "rising",     ""},       // +30%
-        { 500,   T,       0.5,  0.5,  0.244,  "pressed",    "+left"},  // +22%, 6% under 0.26
-        { 600,   T,       0.5,  0.5,  0.200,  "pressed",    ""},
-        { 700,   T,       0.5,  0.5,  0.200,  "refractory", "-left"},
-    });
-    // clang-format on
 }
 
 }  // namespace
