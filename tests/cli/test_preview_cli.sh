@@ -73,8 +73,9 @@ presses=$(grep -c "EV_KEY BTN_LEFT 1" "$work/ev.txt")
 timeout 60 "$raypoint" plot "$work/push.jsonl" --events "$work/ev.txt" -o "$work/push.png" || fail "plot --events exited $?"
 
 # With a daemon running, preview on a camera pauses it first and resumes it however it ends:
-# here the camera does not exist.
-"$raypoint" run --input "$push" --sink null 2>"$work/daemon.log" &
+# here the camera does not exist. The clip loops (--realtime) so the daemon outlives the checks
+# on a slow or loaded machine.
+"$raypoint" run --input "$push" --realtime --duration 240 --sink null 2>"$work/daemon.log" &
 daemon_pid=$!
 trap 'kill "$daemon_pid" 2>/dev/null; rm -rf "$work"' EXIT
 for _ in $(seq 50); do [ -S "$work/raypoint.sock" ] && break; sleep 0.1; done
