@@ -153,6 +153,11 @@ std::vector<Key> output_keys() {
             "farther it is an approach while moving, not a push (0 = off)",
             [](auto& c) -> auto& { return c.core.pointer.click.push_travel; }),
         real_key(
+            "click", "push_region_jump", 0.0, 10.0,
+            "push_travel leaves out the centroid's jumps with the size steps the depth signal "
+            "took out while they sum to at most this many times the target's size (0 = never)",
+            [](auto& c) -> auto& { return c.core.pointer.click.push_region_jump; }),
+        real_key(
             "click", "push_dip", 0.0, 1.0,
             "while a push rises, sqrt(area) may fall this far (relative) under its largest "
             "since the push began; farther it is a wobble, not a push (0 = off)",

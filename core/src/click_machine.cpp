@@ -105,6 +105,8 @@ ClickStep ClickMachine::step(Timestamp timestamp, std::optional<double> scale, b
     }
     last_frame_ = now_;
     last_where_ = where_;
+    last_region_jumps_ = region_jumps_;
+    last_region_offset_ = region_offset_;
     last_raw_ = raw_;
     last_scale_ = scale_;
     result_.state = state_;
@@ -215,6 +217,8 @@ void ClickMachine::on_idle() noexcept {
         push_began_ = crossed(settings_.start_rise);
         rising_at_ = now_;
         push_from_ = last_where_;
+        push_region_jumps_ = last_region_jumps_;
+        push_region_offset_ = last_region_offset_;
         push_raw_ = last_raw_;
         push_peak_ = 0.0;
         held_since_.reset();
@@ -236,8 +240,16 @@ void ClickMachine::on_rising() noexcept {
     // where the push began: the baseline is on the depth signal's scale, which every step it
     // took out has shrunk (to a third of the size on some clips), and with it the travel.
     const double size = push_raw_ > 0.0 ? push_raw_ : baseline_;
+    // The region's steps since the push began moved the centroid, not the hand, while they
+    // add up to little of its size; the position has them as far as its smoothing passed them.
+    cv::Point2d travel = where_ - push_from_;
+    // Jumps from before the push that the smoothing is still passing on are left out too.
+    if (settings_.push_region_jump > 0.0 &&
+        cv::norm(region_jumps_ - push_region_jumps_) <= settings_.push_region_jump * size) {
+        travel -= region_offset_ - push_region_offset_;
+    }
     const bool carried =
-        settings_.push_travel > 0.0 && cv::norm(where_ - push_from_) > settings_.push_travel * size;
+        settings_.push_travel > 0.0 && cv::norm(travel) > settings_.push_travel * size;
     // A push grows frame after frame; the bob of a step or a wobble goes up and down.
     push_peak_ = std::max(push_peak_, scale_);
     const bool dipped =

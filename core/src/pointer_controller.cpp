@@ -16,13 +16,15 @@ void put_motion(PointerCommand& command, const Motion& motion) noexcept {
 
 }  // namespace
 
-PointerController::PointerController(const PointerSettings& settings, double frame_aspect) noexcept
+PointerController::PointerController(const PointerSettings& settings, double frame_aspect,
+                                     const OutputSettings& output) noexcept
     : settings_(settings),
       frame_aspect_(frame_aspect > 0.0 ? frame_aspect : 4.0 / 3.0),
       mapper_(settings.motion, frame_aspect_),
       depth_(settings.click),
       clicker_(settings.click),
-      dweller_(settings.dwell) {}
+      dweller_(settings.dwell),
+      offset_weight_(output.smoothing == SmoothingKind::ema ? output.ema_weight : 0.0) {}
 
 void PointerController::change(PointerCommand& command, Button button, bool pressed) noexcept {
     bool& down = down_[index(button)];
@@ -36,6 +38,27 @@ void PointerController::release_down(PointerCommand& command) noexcept {
         change(command, button, false);
 }
 
+// ClickSettings::push_region_jump: after the depth signal's update for the frame.
+void PointerController::follow_region(bool has_target, cv::Point2d centroid) noexcept {
+    if (!has_target) {
+        region_jumps_ = region_offset_ = last_jump_ = cv::Point2d();
+        has_last_centroid_ = false;
+    } else {
+        cv::Point2d jump;
+        if (has_last_centroid_ && depth_.absorbed()) jump = centroid - last_centroid_;
+        // A step given back was the target's after all: its jump counts again.
+        if (depth_.given_back()) region_jumps_ -= last_jump_;
+        region_jumps_ += jump;
+        last_jump_ = jump;
+        // As the tracker's smoothing passes the sum on to the position (Tracker::process: once
+        // a frame, linear, so the sum's share of the position is the sum smoothed alike).
+        region_offset_ = region_offset_ * offset_weight_ + region_jumps_ * (1.0 - offset_weight_);
+        last_centroid_ = centroid;
+        has_last_centroid_ = true;
+    }
+    clicker_.set_region(region_jumps_, region_offset_);
+}
+
 PointerCommand PointerController::release_all() noexcept {
     PointerCommand command;
     clicker_.release_all();
@@ -43,6 +66,7 @@ PointerCommand PointerController::release_all() noexcept {
     dweller_.reset();
     mapper_.reset();
     tracking_since_.reset();
+    follow_region(false, cv::Point2d());
     undo_ = {};
     before_push_.reset();
     wheel_remainder_ = 0.0;
@@ -70,10 +94,11 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
             // Frame widths on both axes, as the hold radius is.
             const cv::Point2d where(position.x, position.y / frame_aspect_);
             const double raw = has_target ? std::sqrt(*frame.area) : 0.0;
+            const cv::Point2d centroid(frame.centroid.x, frame.centroid.y / frame_aspect_);
             const std::optional<double> scale =
-                depth_.update(has_target ? std::optional<double>(raw) : std::nullopt,
-                              cv::Point2d(frame.centroid.x, frame.centroid.y / frame_aspect_), now,
+                depth_.update(has_target ? std::optional<double>(raw) : std::nullopt, centroid, now,
                               frame.light_change);
+            follow_region(has_target, centroid);
             const ClickStep step = clicker_.step(now, scale, ready, where, depth_.given_back(), raw,
                                                  depth_.absorbed(), depth_.jumped());
             // x and y stay where the push began while a button is down or may yet be, and on

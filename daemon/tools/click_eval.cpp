@@ -183,11 +183,12 @@ void trace_frame(std::FILE* out, const core::FrameResult& result,
 
 }  // namespace
 
-void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, Tallies& tallies,
-                std::FILE* misses, std::FILE* trace, std::string_view trace_clip) {
+void score_clip(const TrackedClip& clip, const core::PointerSettings& settings,
+                const core::OutputSettings& output, Tallies& tallies, std::FILE* misses,
+                std::FILE* trace, std::string_view trace_clip) {
     if (trace != nullptr && clip.name != trace_clip) trace = nullptr;
     if (trace != nullptr) print_trace_header(trace, clip.name);
-    core::PointerController pointer(settings, clip.aspect);
+    core::PointerController pointer(settings, clip.aspect, output);
     std::vector<Press> presses;
     Outputs outputs;
     std::vector<double> times;

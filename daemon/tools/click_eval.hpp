@@ -86,10 +86,11 @@ using Tallies = std::map<std::string, Tally>;
 
 // The pointer over one tracked clip; adds to `tallies`. `misses`: a line for each intended
 // press missed and each false or unmatched press, with what the tracker and the rise did.
-// `trace`: a header and a line for each frame of the clip named `trace_clip`.
-void score_clip(const TrackedClip& clip, const core::PointerSettings& settings, Tallies& tallies,
-                std::FILE* misses = nullptr, std::FILE* trace = nullptr,
-                std::string_view trace_clip = {});
+// `trace`: a header and a line for each frame of the clip named `trace_clip`. `output`: the
+// smoothing the results' positions came through (the tracker's).
+void score_clip(const TrackedClip& clip, const core::PointerSettings& settings,
+                const core::OutputSettings& output, Tallies& tallies, std::FILE* misses = nullptr,
+                std::FILE* trace = nullptr, std::string_view trace_clip = {});
 
 double median(std::vector<double> values);  // NaN when empty
 

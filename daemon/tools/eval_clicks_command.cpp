@@ -234,17 +234,20 @@ std::vector<TrackedClip> track_all(const std::vector<scene::GestureClip>& set,
 }
 
 Tallies score_all(const std::vector<TrackedClip>& clips, const core::PointerSettings& settings,
-                  std::FILE* misses = nullptr, std::string_view trace = {}) {
+                  const core::OutputSettings& output, std::FILE* misses = nullptr,
+                  std::string_view trace = {}) {
     Tallies tallies;
     for (const TrackedClip& clip : clips)
-        score_clip(clip, settings, tallies, misses, trace.empty() ? nullptr : stderr, trace);
+        score_clip(clip, settings, output, tallies, misses, trace.empty() ? nullptr : stderr,
+                   trace);
     return tallies;
 }
 
 // The sweep of docs/clicks.md: press_rise along each series; push_seconds (the settings' and two
 // longer) and the time the rise must be held (press_hold_seconds) across them.
 std::vector<SweepPoint> sweep(const std::vector<TrackedClip>& clips,
-                              const core::PointerSettings& base) {
+                              const core::PointerSettings& base,
+                              const core::OutputSettings& output) {
     std::vector<SweepPoint> points;
     for (const double hold : {0.0, 0.05}) {
         for (const double push : {base.click.push_seconds, 0.4, 0.6}) {
@@ -256,7 +259,7 @@ std::vector<SweepPoint> sweep(const std::vector<TrackedClip>& clips,
                 settings.click.release_rise = std::min(settings.click.release_rise, rise / 2);
                 settings.click.push_seconds = push;
                 settings.click.press_hold_seconds = hold;
-                const Tallies tallies = score_all(clips, settings);
+                const Tallies tallies = score_all(clips, settings, output);
                 char label[32];
                 std::snprintf(label, sizeof label, "%.2f", rise);
                 const Tally& target = tallies.contains("target") ? tallies.at("target") : Tally{};
@@ -360,13 +363,14 @@ int eval_clicks_command(std::span<const std::string_view> args) {
     const std::vector<TrackedClip> tracked = track_all(set, options, config.core);
     std::printf("# raypoint eval-clicks: gesture set '%s' (seed %u), %zu recorded clips\n\n",
                 options.set.c_str(), options.seed, options.clips.size());
-    const Tallies tallies =
-        score_all(tracked, config.core.pointer, options.misses ? stderr : nullptr, options.trace);
+    const Tallies tallies = score_all(tracked, config.core.pointer, config.core.output,
+                                      options.misses ? stderr : nullptr, options.trace);
     print_tallies(stdout, tallies);
     std::printf("\n");
     print_gestures(stdout, tallies);
     if (options.sweep) {
-        const std::vector<SweepPoint> points = sweep(tracked, config.core.pointer);
+        const std::vector<SweepPoint> points =
+            sweep(tracked, config.core.pointer, config.core.output);
         std::printf("\n");
         print_sweep(stdout, points);
         if (!options.plot.empty()) plot_sweep(options.plot, points);

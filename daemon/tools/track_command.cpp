@@ -105,8 +105,10 @@ int track_command(std::span<const std::string_view> args) {
             const double t = static_cast<double>(result.timestamp) * 1e-6;
             log.samples.push_back({t, result.state, result.has_position, result.position});
             if (!pointer) {
-                pointer.emplace(config.core.pointer, static_cast<double>(frame->bgr.cols) /
-                                                         static_cast<double>(frame->bgr.rows));
+                pointer.emplace(
+                    config.core.pointer,
+                    static_cast<double>(frame->bgr.cols) / static_cast<double>(frame->bgr.rows),
+                    config.core.output);
             }
             for (const auto& change : pointer->update(result).button_changes()) {
                 if (change.button == core::Button::left) log.clicks.push_back({t, change.pressed});

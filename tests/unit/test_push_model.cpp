@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// The push model (push_travel, push_dip, the hold across a centroid jump) as transcripts
-// (test_pointer_transcript.hpp): 10 fps rows in, the click state and the device command out.
-// The transcripts' centroid is the row's x, y, as the smoothed position is. Settings: those of
+// The push model (push_travel and push_region_jump, push_dip, the hold across a centroid jump) as
+// transcripts (test_pointer_transcript.hpp): 10 fps rows in, the click state and the device command
+// out. The transcripts' centroid is the row's x, y, as the smoothed position is. Settings: those of
 // test_click_machine.cpp (start 5%, press 20%, release 10%, push 0.35 s, no hold, a constant
 // baseline) with, in each test, the part under test on.
 
@@ -76,6 +76,88 @@ TEST(PushModel, TheTravelIsAgainstTheTargetsOwnSize) {
         { 600,   T,       0.56, 0.5,  0.270,  "idle",       ""},
         { 700,   T,       0.585,0.5,  0.310,  "rising",     "rel -25 0"},  // +15%
         { 800,   T,       0.585,0.5,  0.340,  "pressed",    "rel 25 0 +left"},
+    });
+    // clang-format on
+}
+
+// The transcripts' position is the centroid itself: no smoothing between them.
+const OutputSettings unsmoothed{SmoothingKind::ema, 0.0};
+
+TEST(PushModel, TheRegionsStepIsNoTravel) {
+    // push_travel 0.1 (0.02 frame widths at size 0.2), 30 fps: while the push rises, the region
+    // takes in a piece of the background, +14% with the centroid 0.04 frame widths aside. The
+    // depth signal takes the step out, and the travel leaves its jump out too
+    // (push_region_jump: 0.04 is within 0.4 of the size): the push goes on growing where it
+    // is and presses. The same move with no step is the hand carried along
+    // (AnApproachCarriedSidewaysIsNotAPush).
+    PointerSettings settings = glitches();
+    settings.click.push_travel = 0.1;
+    settings.click.push_region_jump = 0.4;
+    PointerController pointer(settings, aspect, unsmoothed);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 334,   T,       0.5,  0.5,  0.215,  "rising",     ""},
+        { 367,   T,       0.54, 0.5,  0.245,  "rising",     "rel -40 0"},  // absorbed
+        { 400,   T,       0.545,0.5,  0.262,  "rising",     "rel -5 0"},
+        { 434,   T,       0.55, 0.5,  0.280,  "pressed",    "rel 45 0 +left"},
+    });
+    // clang-format on
+    // Counting every jump (push_region_jump 0), the push is carried off at the step.
+    settings.click.push_region_jump = 0.0;
+    PointerController counted(settings, aspect, unsmoothed);
+    // clang-format off
+    play(counted, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 334,   T,       0.5,  0.5,  0.215,  "rising",     ""},
+        { 367,   T,       0.54, 0.5,  0.245,  "drifting",   "rel -40 0"},
+    });
+    // clang-format on
+}
+
+TEST(PushModel, ASwipeOfStepsIsTravel) {
+    // A hand that sets off on a swipe after coming closer: every frame of the swipe is a size
+    // step the depth signal takes out, the centroid 0.04 frame widths on each time. Their sum
+    // passes push_region_jump (0.4 of the size 0.2: 0.08) on the third: the travel counts all
+    // of it and the rise is an approach while moving. Leaving all of it out, the swipe would
+    // press once the centroid stops (press_hold_seconds 0.03 holds on frames without a jump).
+    PointerSettings settings = glitches();
+    settings.click.push_travel = 0.1;
+    settings.click.push_region_jump = 0.4;
+    settings.click.press_hold_seconds = 0.03;
+    PointerController pointer(settings, aspect, unsmoothed);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 334,   T,       0.5,  0.5,  0.215,  "rising",     ""},
+        { 367,   T,       0.5,  0.5,  0.260,  "rising",     ""},           // +30%: held
+        { 400,   T,       0.54, 0.5,  0.290,  "rising",     "rel -40 0"},  // steps taken out
+        { 434,   T,       0.58, 0.5,  0.260,  "rising",     "rel -40 0"},
+        { 467,   T,       0.62, 0.5,  0.290,  "drifting",   "rel -40 0"},  // 0.12 > 0.08
+        { 500,   T,       0.62, 0.5,  0.290,  "drifting",   ""},
+        { 534,   T,       0.62, 0.5,  0.290,  "drifting",   ""},
+    });
+    settings.click.push_region_jump = 10.0;
+    PointerController unchecked(settings, aspect, unsmoothed);
+    play(unchecked, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 334,   T,       0.5,  0.5,  0.215,  "rising",     ""},
+        { 367,   T,       0.5,  0.5,  0.260,  "rising",     ""},
+        { 400,   T,       0.54, 0.5,  0.290,  "rising",     "rel -40 0"},
+        { 434,   T,       0.58, 0.5,  0.260,  "rising",     "rel -40 0"},
+        { 467,   T,       0.62, 0.5,  0.290,  "rising",     "rel -40 0"},
+        { 500,   T,       0.62, 0.5,  0.290,  "rising",     ""},
+        { 534,   T,       0.62, 0.5,  0.290,  "pressed",    "rel 120 0 +left"},
     });
     // clang-format on
 }

@@ -205,7 +205,8 @@ void PointerDaemon::on_frame(const Capture& capture) {
     statistics_.count_frame();
     if (!pointer_) {
         pointer_.emplace(parts_.config.core.pointer,
-                         static_cast<double>(frame.width) / static_cast<double>(frame.height));
+                         static_cast<double>(frame.width) / static_cast<double>(frame.height),
+                         parts_.config.core.output);
     }
     if (paused_) return;
     // `recenter`: the hand's place at that moment is the middle of the view from then on.

@@ -108,7 +108,8 @@ void PreviewSession::process(const core::FrameView& frame) {
     previous_ = frame.timestamp;
     if (!pointer_) {
         pointer_.emplace(config_.core.pointer,
-                         static_cast<double>(frame.width) / static_cast<double>(frame.height));
+                         static_cast<double>(frame.width) / static_cast<double>(frame.height),
+                         config_.core.output);
     }
     if (last_.recovery_from) {
         recovery_from_ = last_.recovery_from;

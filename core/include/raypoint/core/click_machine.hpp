@@ -60,6 +60,13 @@ class ClickMachine {
   public:
     explicit ClickMachine(const ClickSettings& settings) noexcept;
 
+    // Before each step(): the centroid's jumps on the frames whose size step the depth signal
+    // took out, summed since the target was picked (frame widths), and that sum as the
+    // position's smoothing has passed it on (ClickSettings::push_region_jump). Zero: none.
+    void set_region(cv::Point2d jumps, cv::Point2d offset) noexcept {
+        region_jumps_ = jumps;
+        region_offset_ = offset;
+    }
     // scale: sqrt(area) of the tracked target, or nullopt when there is none (not TRACKING, or
     // the frame that picks a target). ready: tracked for min_tracking_seconds (PointerController
     // decides). Losing the target while the button is down releases it. where: the smoothed
@@ -132,6 +139,14 @@ class ClickMachine {
     Timestamp rising_at_ = 0;  // the frame that entered RISING
     cv::Point2d push_from_;    // where the push began: the position of the frame before RISING
     cv::Point2d last_where_;
+    // ClickSettings::push_region_jump: set_region()'s values, the last frame's, and the last
+    // frame's before the push began.
+    cv::Point2d region_jumps_;
+    cv::Point2d region_offset_;
+    cv::Point2d last_region_jumps_;
+    cv::Point2d last_region_offset_;
+    cv::Point2d push_region_jumps_;
+    cv::Point2d push_region_offset_;
     double last_raw_ = 0.0;    // the previous frame's raw scale
     double last_scale_ = 0.0;  // the previous frame's scale (the depth signal); 0: none
     double push_raw_ = 0.0;    // the raw scale on the frame before RISING

@@ -21,8 +21,10 @@ namespace raypoint::core {
 class PointerController {
   public:
     // frame_aspect: the camera frame's width / height (640x480: 4/3).
-    explicit PointerController(const PointerSettings& settings,
-                               double frame_aspect = 4.0 / 3.0) noexcept;
+    // output: the smoothing the tracker's positions come through (Tracker's OutputSettings),
+    // which the click machine's travel follows (region_offset_).
+    explicit PointerController(const PointerSettings& settings, double frame_aspect = 4.0 / 3.0,
+                               const OutputSettings& output = OutputSettings{}) noexcept;
 
     // One tracker result, in timestamp order.
     PointerCommand update(const FrameResult& frame) noexcept;
@@ -42,6 +44,7 @@ class PointerController {
     void release_down(PointerCommand& command) noexcept;
     void depth_click(const ClickStep& step, const Motion& motion, PointerCommand& command) noexcept;
     void scroll(double up, PointerCommand& command) noexcept;  // up: frame widths
+    void follow_region(bool has_target, cv::Point2d centroid) noexcept;
 
     PointerSettings settings_;
     double frame_aspect_;
@@ -50,6 +53,16 @@ class PointerController {
     ClickMachine clicker_;
     DwellClicker dweller_;
     std::optional<Timestamp> tracking_since_;
+    // ClickSettings::push_region_jump: the centroid's jumps on frames whose size step the depth
+    // signal took out (the region's, not the target's), summed since the target was picked, and
+    // that sum as the position's smoothing has passed it on so far (offset_weight_: the EMA's
+    // weight; One Euro's is taken as 0, passed on at once).
+    cv::Point2d region_jumps_;
+    cv::Point2d region_offset_;
+    cv::Point2d last_centroid_;
+    cv::Point2d last_jump_;
+    bool has_last_centroid_ = false;
+    double offset_weight_ = 0.0;
     std::array<bool, 3> down_{};
     // Relative: device pixels emitted since the push began, undone by the press.
     cv::Point undo_;
