@@ -155,7 +155,7 @@ std::vector<Key> output_keys() {
         real_key(
             "click", "push_region_jump", 0.0, 10.0,
             "push_travel leaves out the centroid's jumps with the size steps the depth signal "
-            "took out while they sum to at most this many times the target's size (0 = never)",
+            "took out, up to this many times the target's size of them (0 = never)",
             [](auto& c) -> auto& { return c.core.pointer.click.push_region_jump; }),
         real_key(
             "click", "push_dip", 0.0, 1.0,

@@ -244,9 +244,14 @@ void ClickMachine::on_rising() noexcept {
     // add up to little of its size; the position has them as far as its smoothing passed them.
     cv::Point2d travel = where_ - push_from_;
     // Jumps from before the push that the smoothing is still passing on are left out too.
-    if (settings_.push_region_jump > 0.0 &&
-        cv::norm(region_jumps_ - push_region_jumps_) <= settings_.push_region_jump * size) {
-        travel -= region_offset_ - push_region_offset_;
+    // Past the cap only its share of them: a flicker that jumps past it for a frame and comes
+    // half-way back is still the region's, while a swipe's steps, several times the cap, are
+    // mostly travel.
+    if (settings_.push_region_jump > 0.0) {
+        const double jumps = cv::norm(region_jumps_ - push_region_jumps_);
+        const double cap = settings_.push_region_jump * size;
+        const double share = jumps <= cap ? 1.0 : cap / jumps;
+        travel -= (region_offset_ - push_region_offset_) * share;
     }
     const bool carried =
         settings_.push_travel > 0.0 && cv::norm(travel) > settings_.push_travel * size;

@@ -16,6 +16,7 @@ Settings paper_settings() {
     settings.estimator.weak_edge_threshold = 0;
     settings.estimator.diagonal_tolerance = 0;
     settings.estimator.fill_growth = 0.0;
+    settings.estimator.neck_radius = 0;
     settings.tracking.keep_still_target = false;
     settings.tracking.recover_small = false;
     settings.tracking.change_seconds = 0.0;

@@ -28,6 +28,14 @@ PointerSettings glitches() {
     return s;
 }
 
+// push_travel 0.1 of the size, with the region's jumps left out up to 0.4 of it.
+PointerSettings region_steps() {
+    PointerSettings s = glitches();
+    s.click.push_travel = 0.1;
+    s.click.push_region_jump = 0.4;
+    return s;
+}
+
 TEST(PushModel, AnApproachCarriedSidewaysIsNotAPush) {
     // push_travel 0.1: the position may move 0.1 of the size (0.02 frame widths here) while
     // the push rises. The hand comes 22% closer while moving 0.06 frame widths: an approach.
@@ -90,9 +98,7 @@ TEST(PushModel, TheRegionsStepIsNoTravel) {
     // (push_region_jump: 0.04 is within 0.4 of the size): the push goes on growing where it
     // is and presses. The same move with no step is the hand carried along
     // (AnApproachCarriedSidewaysIsNotAPush).
-    PointerSettings settings = glitches();
-    settings.click.push_travel = 0.1;
-    settings.click.push_region_jump = 0.4;
+    PointerSettings settings = region_steps();
     PointerController pointer(settings, aspect, unsmoothed);
     // clang-format off
     play(pointer, {
@@ -126,9 +132,7 @@ TEST(PushModel, ASwipeOfStepsIsTravel) {
     // passes push_region_jump (0.4 of the size 0.2: 0.08) on the third: the travel counts all
     // of it and the rise is an approach while moving. Leaving all of it out, the swipe would
     // press once the centroid stops (press_hold_seconds 0.03 holds on frames without a jump).
-    PointerSettings settings = glitches();
-    settings.click.push_travel = 0.1;
-    settings.click.push_region_jump = 0.4;
+    PointerSettings settings = region_steps();
     settings.click.press_hold_seconds = 0.03;
     PointerController pointer(settings, aspect, unsmoothed);
     // clang-format off
@@ -158,6 +162,28 @@ TEST(PushModel, ASwipeOfStepsIsTravel) {
         { 467,   T,       0.62, 0.5,  0.290,  "rising",     "rel -40 0"},
         { 500,   T,       0.62, 0.5,  0.290,  "rising",     ""},
         { 534,   T,       0.62, 0.5,  0.290,  "pressed",    "rel 120 0 +left"},
+    });
+    // clang-format on
+}
+
+TEST(PushModel, AFlickerPastTheCapIsStillTheRegions) {
+    // The region jumps the centroid 0.095 frame widths for a frame (past push_region_jump's
+    // 0.08 at size 0.2) and comes half-way back, both steps taken out. Past the cap only the
+    // cap's share of the jumps is left out of the travel (0.015 counts, under push_travel's
+    // 0.02), and once they are back under it all of them: the push presses. Counting all of
+    // them past the cap, it drifted at the flicker.
+    PointerSettings settings = region_steps();
+    PointerController pointer(settings, aspect, unsmoothed);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 334,   T,       0.5,  0.5,  0.215,  "rising",     ""},
+        { 367,   T,       0.595,0.5,  0.262,  "rising",     "rel -95 0"},  // absorbed
+        { 400,   T,       0.55, 0.5,  0.240,  "rising",     "rel 45 0"},   // absorbed
+        { 434,   T,       0.55, 0.5,  0.270,  "pressed",    "rel 50 0 +left"},
     });
     // clang-format on
 }

@@ -135,9 +135,10 @@ struct ClickSettings {
     double push_travel = 0.06;
     // The travel leaves out the region's steps: the centroid's jumps on frames whose size step
     // the depth signal took out (a piece of the background taken in or dropped), as the
-    // position's smoothing has passed them on, while their sum since the push began is at
-    // most this many times the target's size; more is the hand going somewhere (a swipe whose
-    // every frame is a step taken out), and the travel counts all of it. 0: it always does.
+    // position's smoothing has passed them on, up to this many times the target's size of
+    // their sum since the push began: of a larger sum only that share is left out, so a
+    // flicker past it for a frame is still the region's, while most of a swipe whose every
+    // frame is a step taken out (several times it) counts. 0: the travel counts all of it.
     double push_region_jump = 0.4;
     // A push grows on every frame: while rising, sqrt(area) may fall at most this far
     // (relative) under its largest since the push began; farther, the rise was the bob of a

@@ -116,12 +116,12 @@ struct EstimatorSettings {
     // falls into pieces has run out through a neck narrower than 2 neck_radius + 1 pixels (a
     // gap in the outline) into what lies beyond; it keeps the piece nearest the inner point,
     // with its thin parts (fingers). Not for a region crossing the image border (an arm: the
-    // wrist is such a neck; extremity's case). 0 = never, the default and the paper. 3 took a
-    // ball past a shelf and a hand past a ball from 1.85 and 1.97 px to 0.57 and 1.28 px and
-    // lost no rendered clip, but on the click gesture set a ball passing behind a hand then
-    // merges into its region in steps the depth signal reads as a push: false clicks 6 to 9 in
-    // 62 minutes, right clicks 265 to 259 of 300 (docs/settings.md).
-    int neck_radius = 0;
+    // wrist is such a neck; extremity's case). 0 = never, the paper. 3 took a ball past a
+    // shelf and a hand past a ball from 1.85 and 1.97 px to 0.57 and 1.28 px and lost no
+    // rendered clip; on the click gesture set a target's region no longer runs into the dark
+    // gap beside it and dilutes its pushes (seeds 8-12: target pushes 93.4% to 95.5%), and
+    // with push_region_jump the region's steps cost no false click there (docs/settings.md).
+    int neck_radius = 3;
 };
 
 struct TrackingSettings {
