@@ -240,7 +240,7 @@ void ClickMachine::on_rising() noexcept {
     // where the push began: the baseline is on the depth signal's scale, which every step it
     // took out has shrunk (to a third of the size on some clips), and with it the travel.
     const double size = push_raw_ > 0.0 ? push_raw_ : baseline_;
-    // The region's steps since the push began moved the centroid, not the hand, while they
+    // The region's steps since the push began moved the centroid, not the hand, as far as they
     // add up to little of its size; the position has them as far as its smoothing passed them.
     cv::Point2d travel = where_ - push_from_;
     // Jumps from before the push that the smoothing is still passing on are left out too.

@@ -129,8 +129,9 @@ TEST(PushModel, TheRegionsStepIsNoTravel) {
 TEST(PushModel, ASwipeOfStepsIsTravel) {
     // A hand that sets off on a swipe after coming closer: every frame of the swipe is a size
     // step the depth signal takes out, the centroid 0.04 frame widths on each time. Their sum
-    // passes push_region_jump (0.4 of the size 0.2: 0.08) on the third: the travel counts all
-    // of it and the rise is an approach while moving. Leaving all of it out, the swipe would
+    // passes push_region_jump (0.4 of the size 0.2: 0.08) on the third: the travel counts what
+    // passes it (0.04, over push_travel's 0.02) and the rise is an approach while moving.
+    // Leaving all of it out, the swipe would
     // press once the centroid stops (press_hold_seconds 0.03 holds on frames without a jump).
     PointerSettings settings = region_steps();
     settings.click.press_hold_seconds = 0.03;
