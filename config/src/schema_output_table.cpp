@@ -12,12 +12,17 @@ std::vector<Key> output_keys() {
     return {
         // [output] paper 4.3
         choice_key<SmoothingKind>(
-            "output", "smoothing", "position smoothing: exponential once a frame, or One Euro",
+            "output", "smoothing", "position smoothing: exponential, or One Euro",
             {{SmoothingKind::ema, "ema"}, {SmoothingKind::one_euro, "one-euro"}},
             [](auto& c) -> auto& { return c.core.output.smoothing; }),
         real_key(
             "output", "ema_weight", 0.0, 0.999, "ema: weight of the previous position",
             [](auto& c) -> auto& { return c.core.output.ema_weight; }),
+        real_key(
+            "output", "ema_frame_rate", 0.0, 1000.0,
+            "ema: ema_weight is the weight of 1/this s of frame time, so the lag in seconds is "
+            "the same at any frame rate (0 = once a frame, as the paper)",
+            [](auto& c) -> auto& { return c.core.output.ema_frame_rate; }),
         real_key(
             "output", "one_euro_min_cutoff", 0.001, 100.0,
             "one-euro: cutoff at rest in Hz (lower: steadier)",

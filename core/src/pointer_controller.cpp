@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "raypoint/core/pointer_controller.hpp"
 
+#include "raypoint/core/smoothing.hpp"
+
 #include <cmath>
 
 namespace raypoint::core {
@@ -24,7 +26,7 @@ PointerController::PointerController(const PointerSettings& settings, double fra
       depth_(settings.click),
       clicker_(settings.click),
       dweller_(settings.dwell),
-      offset_weight_(output.smoothing == SmoothingKind::ema ? output.ema_weight : 0.0) {}
+      output_(output) {}
 
 void PointerController::change(PointerCommand& command, Button button, bool pressed) noexcept {
     bool& down = down_[index(button)];
@@ -39,7 +41,8 @@ void PointerController::release_down(PointerCommand& command) noexcept {
 }
 
 // ClickSettings::push_region_jump: after the depth signal's update for the frame.
-void PointerController::follow_region(bool has_target, cv::Point2d centroid) noexcept {
+void PointerController::follow_region(bool has_target, cv::Point2d centroid,
+                                      Timestamp now) noexcept {
     if (!has_target) {
         region_jumps_ = region_offset_ = last_jump_ = cv::Point2d();
         has_last_centroid_ = false;
@@ -50,10 +53,15 @@ void PointerController::follow_region(bool has_target, cv::Point2d centroid) noe
         if (depth_.given_back()) region_jumps_ -= last_jump_;
         region_jumps_ += jump;
         last_jump_ = jump;
-        // As the tracker's smoothing passes the sum on to the position (Tracker::process: once
-        // a frame, linear, so the sum's share of the position is the sum smoothed alike).
-        region_offset_ = region_offset_ * offset_weight_ + region_jumps_ * (1.0 - offset_weight_);
+        // As the tracker's smoothing passes the sum on to the position (Tracker::process: linear,
+        // so the sum's share of the position is the sum smoothed alike).
+        const double seconds =
+            has_last_centroid_ ? static_cast<double>(now - last_centroid_at_) * 1e-6 : 0.0;
+        const double weight =
+            output_.smoothing == SmoothingKind::ema ? ema_weight_after(output_, seconds) : 0.0;
+        region_offset_ = region_offset_ * weight + region_jumps_ * (1.0 - weight);
         last_centroid_ = centroid;
+        last_centroid_at_ = now;
         has_last_centroid_ = true;
     }
     clicker_.set_region(region_jumps_, region_offset_);
@@ -66,7 +74,7 @@ PointerCommand PointerController::release_all() noexcept {
     dweller_.reset();
     mapper_.reset();
     tracking_since_.reset();
-    follow_region(false, cv::Point2d());
+    follow_region(false, cv::Point2d(), 0);
     undo_ = {};
     before_push_.reset();
     wheel_remainder_ = 0.0;
@@ -98,7 +106,7 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
             const std::optional<double> scale =
                 depth_.update(has_target ? std::optional<double>(raw) : std::nullopt, centroid, now,
                               frame.light_change);
-            follow_region(has_target, centroid);
+            follow_region(has_target, centroid, now);
             const ClickStep step = clicker_.step(now, scale, ready, where, depth_.given_back(), raw,
                                                  depth_.absorbed(), depth_.jumped());
             // x and y stay where the push began while a button is down or may yet be, and on

@@ -26,6 +26,7 @@ Settings paper_settings() {
     settings.tracking.repick_difference = 0;
     settings.tracking.search_weighting = SearchWeighting::all;
     settings.output.smoothing = SmoothingKind::ema;
+    settings.output.ema_frame_rate = 0.0;
     // The paper has no clicks; the preset keeps the click by depth it was first measured with
     // (docs/pointer.md), whatever the defaults become.
     ClickSettings& click = settings.pointer.click;

@@ -36,6 +36,11 @@ double OneEuroFilter::update(double value, Timestamp timestamp) noexcept {
     return value_;
 }
 
+double ema_weight_after(const OutputSettings& settings, double seconds) noexcept {
+    if (settings.ema_frame_rate <= 0.0 || seconds <= 0.0) return settings.ema_weight;
+    return std::pow(settings.ema_weight, seconds * settings.ema_frame_rate);
+}
+
 PositionSmoother::PositionSmoother(const OutputSettings& settings) noexcept
     : settings_(settings),
       one_euro_{OneEuroFilter(settings.one_euro_min_cutoff, settings.one_euro_beta,
@@ -47,6 +52,8 @@ PositionSmoother::PositionSmoother(const OutputSettings& settings) noexcept
 
 void PositionSmoother::reset(cv::Point3d position, Timestamp timestamp) noexcept {
     smoothed_ = position;
+    last_ = timestamp;
+    has_last_ = true;
     one_euro_[0].reset(position.x, timestamp);
     one_euro_[1].reset(position.y, timestamp);
     one_euro_[2].reset(position.z, timestamp);
@@ -55,8 +62,8 @@ void PositionSmoother::reset(cv::Point3d position, Timestamp timestamp) noexcept
 cv::Point3d PositionSmoother::update(cv::Point3d position, Timestamp timestamp) noexcept {
     switch (settings_.smoothing) {
         case SmoothingKind::ema: {
-            // Once a frame, as the paper does: the time constant is in frames, not seconds.
-            const double w = settings_.ema_weight;
+            const double seconds = has_last_ ? static_cast<double>(timestamp - last_) * 1e-6 : 0.0;
+            const double w = ema_weight_after(settings_, seconds);
             smoothed_ = smoothed_ * w + position * (1.0 - w);
             break;
         }
@@ -66,6 +73,8 @@ cv::Point3d PositionSmoother::update(cv::Point3d position, Timestamp timestamp) 
                          one_euro_[2].update(position.z, timestamp)};
             break;
     }
+    last_ = timestamp;
+    has_last_ = true;
     return smoothed_;
 }
 

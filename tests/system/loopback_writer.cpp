@@ -7,13 +7,15 @@
 //   raypoint-loopback-writer convert VIDEO OUT.yuyv
 //   raypoint-loopback-writer convert VIDEO OUT.mjpg --mjpeg
 //   raypoint-loopback-writer play FILE /dev/videoN [--wait] [--from S] [--until S] [--loop]
-// play prints "first frame" after its first write (from then on the node is a capture device)
-// and "origin T": the CLOCK_MONOTONIC time (s) at which clip time 0 was (would have been)
-// written, so event times map to clip times. --wait shows the first frame (an empty scene) at
-// the clip's rate until SIGUSR1, then plays: the daemon, slow to start in a VM, sees the whole
-// clip after it is ready. It writes with write(), one whole frame a
-// call, which v4l2loopback takes as one buffer. SIGTERM or --until closes the node: for the
-// daemon that is a camera whose frames stop.
+//                                              [--speed X]
+// --speed plays the clip X times as fast (0.25: a 30 fps clip as 7.5 fps, the hand four times
+// as slow), for a daemon in an emulator that cannot take frames at the clip's rate. play prints
+// "first frame" after its first write (from then on the node is a capture device) and "origin T":
+// the CLOCK_MONOTONIC time (s) at which clip time 0 was (would have been) written, so event times
+// map to clip times. --wait shows the first frame (an empty scene) at the clip's rate until
+// SIGUSR1, then plays: the daemon, slow to start in a VM, sees the whole clip after it is ready. It
+// writes with write(), one whole frame a call, which v4l2loopback takes as one buffer. SIGTERM or
+// --until closes the node: for the daemon that is a camera whose frames stop.
 
 #include <fcntl.h>
 #include <linux/videodev2.h>
@@ -163,7 +165,7 @@ bool write_frame(int fd, const std::vector<std::uint8_t>& frame) {
 }
 
 void play(const Clip& clip, const std::string& device, bool wait, double from, double until,
-          bool loop) {
+          bool loop, double speed) {
     sigset_t go;
     sigemptyset(&go);
     sigaddset(&go, SIGUSR1);
@@ -188,30 +190,32 @@ void play(const Clip& clip, const std::string& device, bool wait, double from, d
     const int first = std::max(0, static_cast<int>(std::lround(from * clip.fps)));
     const int last =
         static_cast<int>(std::lround(std::min(until, clip.count / clip.fps) * clip.fps));
-    // Clip time t is written at origin + t; a late frame is written at once, never skipped.
+    // Clip time t is written at origin + t / speed; a late frame is written at once, never
+    // skipped.
+    const double rate = clip.fps * speed;  // frames a second written
     std::vector<std::uint8_t> frame;
     read_frame(clip, first, frame);
     if (!write_frame(fd, frame)) fail_errno("write " + device);
     std::printf("first frame\n");
     std::fflush(stdout);
-    double next = monotonic_seconds() + 1 / clip.fps;
+    double next = monotonic_seconds() + 1 / rate;
     const timespec now{};
     while (wait && sigtimedwait(&go, nullptr, &now) != SIGUSR1) {
         sleep_until(next);
-        next += 1 / clip.fps;
+        next += 1 / rate;
         if (!write_frame(fd, frame)) fail_errno("write " + device);
     }
-    const double origin = next - first / clip.fps;
+    const double origin = next - first / rate;
     std::printf("origin %.6f\n", origin);
     std::fflush(stdout);
     double loop_start = origin;
     do {
         for (int i = first; i < last; ++i) {
             read_frame(clip, i, frame);
-            sleep_until(loop_start + i / clip.fps);
+            sleep_until(loop_start + i / rate);
             if (!write_frame(fd, frame)) fail_errno("write " + device);
         }
-        loop_start += (last - first) / clip.fps;
+        loop_start += (last - first) / rate;
     } while (loop);
     close(fd);
     std::printf("closed at %.6f\n", monotonic_seconds());
@@ -224,7 +228,7 @@ int main(int argc, char** argv) {
         "usage: raypoint-loopback-writer convert VIDEO OUT.yuyv\n"
         "       raypoint-loopback-writer convert VIDEO OUT.mjpg --mjpeg\n"
         "       raypoint-loopback-writer play FILE /dev/videoN [--wait] [--from S] "
-        "[--until S] [--loop]\n";
+        "[--until S] [--loop] [--speed X]\n";
     try {
         const std::vector<std::string> args(argv + 1, argv + argc);
         if ((args.size() == 3 || (args.size() == 4 && args[3] == "--mjpeg")) &&
@@ -240,6 +244,7 @@ int main(int argc, char** argv) {
         double from = 0;
         double until = 1e9;
         bool loop = false;
+        double speed = 1;
         for (std::size_t i = 3; i < args.size(); ++i) {
             if (args[i] == "--loop") {
                 loop = true;
@@ -249,12 +254,14 @@ int main(int argc, char** argv) {
                 from = std::stod(args[++i]);
             } else if (args[i] == "--until" && i + 1 < args.size()) {
                 until = std::stod(args[++i]);
+            } else if (args[i] == "--speed" && i + 1 < args.size() && std::stod(args[i + 1]) > 0) {
+                speed = std::stod(args[++i]);
             } else {
                 std::fputs(usage.c_str(), stderr);
                 return 2;
             }
         }
-        play(load(args[1]), args[2], wait, from, until, loop);
+        play(load(args[1]), args[2], wait, from, until, loop, speed);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "raypoint-loopback-writer: %s\n", error.what());
         return 1;

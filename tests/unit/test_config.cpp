@@ -346,6 +346,7 @@ TEST(Presets, PaperSwitchesEveryDeviationBack) {
     EXPECT_EQ(config.core.tracking.color_tolerance, 90);
     EXPECT_EQ(config.core.tracking.startup_seconds, 2.0);
     EXPECT_EQ(config.core.output.ema_weight, 0.9);
+    EXPECT_EQ(config.core.output.ema_frame_rate, 0.0);  // once a frame (4.3)
 
     const auto paper = formatted(config);
     EXPECT_FALSE(apply_preset(config, "nope"));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Output smoothing (paper 4.3): the per-frame exponential average and the One Euro filter.
+// Output smoothing (paper 4.3): the exponential average, once a frame or on frame time, and the
+// One Euro filter.
 
 #include <cmath>
 #include <vector>
@@ -13,10 +14,19 @@ namespace {
 
 constexpr Timestamp frame_us = 33'333;  // 30 fps
 
+// Once a frame, as the paper.
 OutputSettings ema_settings() {
     OutputSettings settings;
     settings.smoothing = SmoothingKind::ema;
     settings.ema_weight = 0.9;
+    settings.ema_frame_rate = 0.0;
+    return settings;
+}
+
+// ema_weight a 1/rate s of frame time: 10 a second, so 100 ms intervals give whole powers.
+OutputSettings ema_on_frame_time(double rate) {
+    OutputSettings settings = ema_settings();
+    settings.ema_frame_rate = rate;
     return settings;
 }
 
@@ -53,6 +63,45 @@ TEST(Ema, OnceAFrameWhateverTheTimestamps) {
         // After i frames of 1 from 0: 1 - 0.9^i.
         EXPECT_NEAR(a.x, 1.0 - std::pow(0.9, i), 1e-12);
     }
+}
+
+TEST(Ema, OnFrameTimeALongIntervalWeighsAsTheFramesItStandsFor) {
+    // A camera at 10 fps, and the same camera dropping frames: one frame 300 ms after the last
+    // moves the average as far as three frames 100 ms apart with the same estimate.
+    PositionSmoother every(ema_on_frame_time(10.0));
+    PositionSmoother dropped(ema_on_frame_time(10.0));
+    every.reset({0.0, 0.0, 0.0}, 0);
+    dropped.reset({0.0, 0.0, 0.0}, 0);
+    EXPECT_NEAR(every.update({1.0, 2.0, 3.0}, 100'000).x, 0.1, 1e-12);
+    every.update({1.0, 2.0, 3.0}, 200'000);
+    const cv::Point3d a = every.update({1.0, 2.0, 3.0}, 300'000);
+    const cv::Point3d b = dropped.update({1.0, 2.0, 3.0}, 300'000);
+    EXPECT_NEAR(a.x, 1.0 - 0.729, 1e-12);  // 1 - 0.9^3
+    EXPECT_NEAR(b.x, a.x, 1e-12);
+    EXPECT_NEAR(b.y, a.y, 1e-12);
+    EXPECT_NEAR(b.z, a.z, 1e-12);
+}
+
+TEST(Ema, OnFrameTimeTheLagInSecondsIsTheSameAtAnyFrameRate) {
+    // 95% of a step in 0.95 s at the default 30 a second, whether the camera gives 30 fps or 6.
+    OutputSettings settings;
+    ASSERT_EQ(settings.ema_frame_rate, 30.0);
+    for (const int fps : {30, 15, 6}) {
+        PositionSmoother smoother(settings);
+        smoother.reset({0.0, 0.0, 0.0}, 0);
+        double x = 0.0;
+        for (int i = 1; i <= fps; ++i)  // one second
+            x = smoother.update({1.0, 0.0, 0.0}, i * 1'000'000LL / fps).x;
+        EXPECT_NEAR(x, 1.0 - std::pow(0.9, 30), 1e-9) << fps << " fps";
+    }
+}
+
+TEST(Ema, WeightForAnInterval) {
+    EXPECT_DOUBLE_EQ(ema_weight_after(ema_settings(), 1.0), 0.9);  // once a frame: any interval
+    EXPECT_DOUBLE_EQ(ema_weight_after(ema_on_frame_time(10.0), 0.2), 0.9 * 0.9);
+    EXPECT_DOUBLE_EQ(ema_weight_after(ema_on_frame_time(10.0), 0.05), std::sqrt(0.9));
+    // No interval (a first frame, a repeated timestamp): one frame's weight.
+    EXPECT_DOUBLE_EQ(ema_weight_after(ema_on_frame_time(10.0), 0.0), 0.9);
 }
 
 TEST(Ema, WeightIsASetting) {

@@ -44,7 +44,7 @@ class PointerController {
     void release_down(PointerCommand& command) noexcept;
     void depth_click(const ClickStep& step, const Motion& motion, PointerCommand& command) noexcept;
     void scroll(double up, PointerCommand& command) noexcept;  // up: frame widths
-    void follow_region(bool has_target, cv::Point2d centroid) noexcept;
+    void follow_region(bool has_target, cv::Point2d centroid, Timestamp now) noexcept;
 
     PointerSettings settings_;
     double frame_aspect_;
@@ -55,14 +55,15 @@ class PointerController {
     std::optional<Timestamp> tracking_since_;
     // ClickSettings::push_region_jump: the centroid's jumps on frames whose size step the depth
     // signal took out (the region's, not the target's), summed since the target was picked, and
-    // that sum as the position's smoothing has passed it on so far (offset_weight_: the EMA's
-    // weight; One Euro's is taken as 0, passed on at once).
+    // that sum as the position's smoothing has passed it on so far (the EMA's weight for the
+    // frame's interval; One Euro's is taken as 0, passed on at once).
     cv::Point2d region_jumps_;
     cv::Point2d region_offset_;
     cv::Point2d last_centroid_;
     cv::Point2d last_jump_;
+    Timestamp last_centroid_at_ = 0;
     bool has_last_centroid_ = false;
-    double offset_weight_ = 0.0;
+    OutputSettings output_;
     std::array<bool, 3> down_{};
     // Relative: device pixels emitted since the push began, undone by the press.
     cv::Point undo_;

@@ -194,7 +194,7 @@ struct ClickSettings {
     double hold_rise = 0.03;
     // For this long after a step the depth signal took out, a held push's hold counts from
     // where the position is: the region's centroid jumped with the step, and the smoothed
-    // position follows it for several frames (output.ema_weight 0.9 a frame: a quarter of the
+    // position follows it for several frames (output.ema_weight 0.9 a 1/30 s: a quarter of the
     // way in 0.1 s at 30 fps). On the gesture set 0.1 s: right clicks 257 to 259 of 300, 0.3 s:
     // 262, and left clicks taken for another gesture 34 to 26 of 1650; 0.5 s lost scrolls
     // (docs/clicks.md). 0: off.

@@ -36,7 +36,7 @@ enum class AreaMode {
 };
 
 enum class SmoothingKind {
-    ema,       // new = w * old + (1 - w) * estimate, once a frame (paper 4.3)
+    ema,       // new = w * old + (1 - w) * estimate (paper 4.3; OutputSettings::ema_frame_rate)
     one_euro,  // Casiez, Roussel & Vogel 2012: adaptive low-pass on frame time
 };
 
@@ -209,7 +209,14 @@ struct TrackingSettings {
 
 struct OutputSettings {
     SmoothingKind smoothing = SmoothingKind::ema;
-    double ema_weight = 0.9;           // weight of the old value
+    double ema_weight = 0.9;  // weight of the old value
+    // ema_weight is the weight of 1/ema_frame_rate s of frame time: a frame after an interval
+    // of t seconds weighs the old value ema_weight^(t x ema_frame_rate). The lag in seconds is
+    // then the same at any frame rate: a webcam that halves its rate in dim light, or a busy
+    // machine that drops frames, neither slows the cursor nor lets a moving hand's pointer
+    // trail (at 30 fps and 0.9 the position is 95% of the way in 0.95 s; once a frame at 6 fps
+    // it took 4.7 s). 0: once a frame, whatever the interval (paper 4.3, a 30 fps camera).
+    double ema_frame_rate = 30.0;
     double one_euro_min_cutoff = 1.0;  // Hz
     double one_euro_beta = 0.5;
     double one_euro_d_cutoff = 1.0;  // Hz

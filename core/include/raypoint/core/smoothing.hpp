@@ -28,6 +28,10 @@ class OneEuroFilter {
     Timestamp last_ = 0;
 };
 
+// The EMA's weight of the old value for a frame `seconds` after the last (OutputSettings::
+// ema_frame_rate): ema_weight once a frame at rate 0 or on a first frame (seconds <= 0).
+double ema_weight_after(const OutputSettings& settings, double seconds) noexcept;
+
 class PositionSmoother {
   public:
     explicit PositionSmoother(const OutputSettings& settings) noexcept;
@@ -38,6 +42,8 @@ class PositionSmoother {
   private:
     OutputSettings settings_;
     cv::Point3d smoothed_;
+    Timestamp last_ = 0;
+    bool has_last_ = false;
     std::array<OneEuroFilter, 3> one_euro_;
 };
 

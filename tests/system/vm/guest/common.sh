@@ -137,14 +137,17 @@ stop_all() {
   [ -n "$pids" ] && wait $pids 2>/dev/null
 }
 
+# Clip time is (event time - origin) x speed: the writer's --speed of the clip last played.
+speed=1
 # sum TRANSCRIPT CODE FROM TO: the sum of CODE's values from clip time FROM to TO (s).
 sum() {
-  awk -v o="$origin" -v c="$2" -v a="$3" -v b="$4" \
-    '$3 == c { t = $1 - o; if (t >= a && t < b) s += $4 } END { print s + 0 }' "$1"
+  awk -v o="$origin" -v x="$speed" -v c="$2" -v a="$3" -v b="$4" \
+    '$3 == c { t = ($1 - o) * x; if (t >= a && t < b) s += $4 } END { print s + 0 }' "$1"
 }
 # value_at TRANSCRIPT CODE TIME: CODE's last value at or before clip time TIME (empty: none).
 value_at() {
-  awk -v o="$origin" -v c="$2" -v a="$3" '$3 == c && $1 - o <= a { v = $4 } END { print v }' "$1"
+  awk -v o="$origin" -v x="$speed" -v c="$2" -v a="$3" \
+    '$3 == c && ($1 - o) * x <= a { v = $4 } END { print v }' "$1"
 }
 # count TRANSCRIPT REGEX: lines matching.
 count() { grep -cE "$2" "$1"; }
