@@ -12,7 +12,7 @@
 // as slow), for a daemon in an emulator that cannot take frames at the clip's rate. play prints
 // "first frame" after its first write (from then on the node is a capture device) and "origin T":
 // the CLOCK_MONOTONIC time (s) at which clip time 0 was (would have been) written, so event times
-// map to clip times. --wait shows the first frame (an empty scene) at the clip's rate until
+// map to clip times. --wait shows the first frame (an empty scene) at the playing rate until
 // SIGUSR1, then plays: the daemon, slow to start in a VM, sees the whole clip after it is ready. It
 // writes with write(), one whole frame a call, which v4l2loopback takes as one buffer. SIGTERM or
 // --until closes the node: for the daemon that is a camera whose frames stop.
