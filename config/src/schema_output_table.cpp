@@ -20,8 +20,9 @@ std::vector<Key> output_keys() {
             [](auto& c) -> auto& { return c.core.output.ema_weight; }),
         real_key(
             "output", "ema_frame_rate", 0.0, 1000.0,
-            "ema: ema_weight is the weight of 1/this s of frame time, so the lag in seconds is "
-            "the same at any frame rate (0 = once a frame, as the paper)",
+            "ema: ema_weight is the weight of 1/this s of frame time, or of a frame where frames "
+            "come faster, so the lag in seconds is never longer than at this rate (0 = once a "
+            "frame, as the paper)",
             [](auto& c) -> auto& { return c.core.output.ema_frame_rate; }),
         real_key(
             "output", "one_euro_min_cutoff", 0.001, 100.0,

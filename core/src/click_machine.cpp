@@ -253,8 +253,11 @@ void ClickMachine::on_rising() noexcept {
         const double share = jumps <= cap ? 1.0 : cap / jumps;
         travel -= (region_offset_ - push_region_offset_) * share;
     }
+    // Judged on frames whose centroid did not jump: a region that leaks for one frame is given
+    // back on the next with its centroid, and its jump leaves the travel then; a swipe's travel
+    // is still there on its next frame. No press comes on a jumped frame either (below).
     const bool carried =
-        settings_.push_travel > 0.0 && cv::norm(travel) > settings_.push_travel * size;
+        settings_.push_travel > 0.0 && !jumped_ && cv::norm(travel) > settings_.push_travel * size;
     // A push grows frame after frame; the bob of a step or a wobble goes up and down.
     push_peak_ = std::max(push_peak_, scale_);
     const bool dipped =

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "raypoint/core/smoothing.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace raypoint::core {
@@ -38,7 +39,7 @@ double OneEuroFilter::update(double value, Timestamp timestamp) noexcept {
 
 double ema_weight_after(const OutputSettings& settings, double seconds) noexcept {
     if (settings.ema_frame_rate <= 0.0 || seconds <= 0.0) return settings.ema_weight;
-    return std::pow(settings.ema_weight, seconds * settings.ema_frame_rate);
+    return std::pow(settings.ema_weight, std::max(1.0, seconds * settings.ema_frame_rate));
 }
 
 PositionSmoother::PositionSmoother(const OutputSettings& settings) noexcept

@@ -82,7 +82,7 @@ TEST(Ema, OnFrameTimeALongIntervalWeighsAsTheFramesItStandsFor) {
     EXPECT_NEAR(b.z, a.z, 1e-12);
 }
 
-TEST(Ema, OnFrameTimeTheLagInSecondsIsTheSameAtAnyFrameRate) {
+TEST(Ema, OnFrameTimeTheLagInSecondsIsTheSameAtSlowerFrameRates) {
     // 95% of a step in 0.95 s at the default 30 a second, whether the camera gives 30 fps or 6.
     OutputSettings settings;
     ASSERT_EQ(settings.ema_frame_rate, 30.0);
@@ -92,14 +92,30 @@ TEST(Ema, OnFrameTimeTheLagInSecondsIsTheSameAtAnyFrameRate) {
         double x = 0.0;
         for (int i = 1; i <= fps; ++i)  // one second
             x = smoother.update({1.0, 0.0, 0.0}, i * 1'000'000LL / fps).x;
-        EXPECT_NEAR(x, 1.0 - std::pow(0.9, 30), 1e-9) << fps << " fps";
+        // 1e-5: 30 fps in whole microseconds is 33333 and 33334 us, and a frame closer than
+        // 1/30 s weighs a whole frame.
+        EXPECT_NEAR(x, 1.0 - std::pow(0.9, 30), 1e-5) << fps << " fps";
     }
+}
+
+TEST(Ema, OnFrameTimeAFasterCameraKeepsTheWeightAFrame) {
+    // At 60 fps with the default 30 a second: 0.9 a frame, as the paper, so the lag in seconds
+    // is half that at 30 fps (95% of a step in 30 frames, 0.5 s).
+    OutputSettings settings;
+    PositionSmoother smoother(settings);
+    smoother.reset({0.0, 0.0, 0.0}, 0);
+    double x = 0.0;
+    for (int i = 1; i <= 30; ++i)
+        x = smoother.update({1.0, 0.0, 0.0}, i * 1'000'000LL / 60).x;
+    EXPECT_NEAR(x, 1.0 - std::pow(0.9, 30), 1e-9);
 }
 
 TEST(Ema, WeightForAnInterval) {
     EXPECT_DOUBLE_EQ(ema_weight_after(ema_settings(), 1.0), 0.9);  // once a frame: any interval
     EXPECT_DOUBLE_EQ(ema_weight_after(ema_on_frame_time(10.0), 0.2), 0.9 * 0.9);
-    EXPECT_DOUBLE_EQ(ema_weight_after(ema_on_frame_time(10.0), 0.05), std::sqrt(0.9));
+    // Frames closer than 1/rate: the weight a frame, as once a frame.
+    EXPECT_DOUBLE_EQ(ema_weight_after(ema_on_frame_time(10.0), 0.05), 0.9);
+    EXPECT_DOUBLE_EQ(ema_weight_after(ema_on_frame_time(10.0), 0.15), std::pow(0.9, 1.5));
     // No interval (a first frame, a repeated timestamp): one frame's weight.
     EXPECT_DOUBLE_EQ(ema_weight_after(ema_on_frame_time(10.0), 0.0), 0.9);
 }

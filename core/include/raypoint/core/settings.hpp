@@ -210,12 +210,14 @@ struct TrackingSettings {
 struct OutputSettings {
     SmoothingKind smoothing = SmoothingKind::ema;
     double ema_weight = 0.9;  // weight of the old value
-    // ema_weight is the weight of 1/ema_frame_rate s of frame time: a frame after an interval
-    // of t seconds weighs the old value ema_weight^(t x ema_frame_rate). The lag in seconds is
-    // then the same at any frame rate: a webcam that halves its rate in dim light, or a busy
-    // machine that drops frames, neither slows the cursor nor lets a moving hand's pointer
-    // trail (at 30 fps and 0.9 the position is 95% of the way in 0.95 s; once a frame at 6 fps
-    // it took 4.7 s). 0: once a frame, whatever the interval (paper 4.3, a 30 fps camera).
+    // ema_weight is the weight of 1/ema_frame_rate s of frame time, or of one frame where
+    // frames come faster: a frame t seconds after the last weighs the old value
+    // ema_weight^max(1, t x ema_frame_rate). The lag in seconds is then never longer than at
+    // that rate: a webcam that halves its rate in dim light, or a busy machine that drops
+    // frames, does not let a moving hand's pointer trail (at 30 fps and 0.9 the position is 95%
+    // of the way in 0.95 s; once a frame at 6 fps it took 4.7 s). A faster camera keeps the
+    // paper's weight a frame, and its shorter lag: the push model's travel (ClickSettings::
+    // push_travel) was measured on it. 0: once a frame, whatever the interval (paper 4.3).
     double ema_frame_rate = 30.0;
     double one_euro_min_cutoff = 1.0;  // Hz
     double one_euro_beta = 0.5;

@@ -29,7 +29,8 @@ class OneEuroFilter {
 };
 
 // The EMA's weight of the old value for a frame `seconds` after the last (OutputSettings::
-// ema_frame_rate): ema_weight once a frame at rate 0 or on a first frame (seconds <= 0).
+// ema_frame_rate): ema_weight once a frame at rate 0, on a first frame (seconds <= 0), and for
+// frames closer than 1/rate s.
 double ema_weight_after(const OutputSettings& settings, double seconds) noexcept;
 
 class PositionSmoother {
