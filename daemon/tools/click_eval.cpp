@@ -21,8 +21,8 @@ namespace raypoint::daemon {
 namespace {
 
 // The pushes the targets are stated for: at least 15% closer within 0.6 s.
-constexpr double target_depth = 0.15;
-constexpr double target_seconds = 0.6;
+constexpr double target_depth = scene::target_push_depth;
+constexpr double target_seconds = scene::target_push_seconds;
 // Absolute mode: the device range mapped onto a full-HD screen's width, for offsets in pixels.
 constexpr double screen_px = 1920.0;
 
@@ -73,6 +73,8 @@ void Tally::add(const Tally& o) {
     matched += o.matched;
     motion_seconds += o.motion_seconds;
     false_clicks += o.false_clicks;
+    approaches += o.approaches;
+    approaches_pressed += o.approaches_pressed;
     latencies.insert(latencies.end(), o.latencies.begin(), o.latencies.end());
     offsets.insert(offsets.end(), o.offsets.begin(), o.offsets.end());
 }
@@ -104,8 +106,8 @@ TrackedClip track_rendered_truth(const scene::GestureClip& clip) {
     tracked.motion = clip.motion;
     tracked.conditions = clip.conditions;
     tracked.clicks = sorted(clip.clicks);
-    if (clip.motion_to > clip.motion_from)
-        tracked.motion_spans.emplace_back(clip.motion_from, clip.motion_to);
+    tracked.motion_spans = clip.motion_spans;
+    tracked.approaches = clip.approaches;
     tracked.aspect = double(clip.spec.width) / clip.spec.height;
     tracked.seconds = std::round(clip.spec.seconds * clip.spec.fps) / clip.spec.fps;
     return tracked;
@@ -133,6 +135,7 @@ TrackedClip track_recorded(const std::string& video, const std::string& truth,
     ClickTruth read = read_click_truth(truth);
     tracked.clicks = std::move(read.clicks);
     tracked.motion_spans = std::move(read.motion_spans);
+    tracked.approaches = std::move(read.approaches);
     tracked.clicks = sorted(tracked.clicks);
     VideoSource source(video, 0.0);
     core::Tracker tracker(settings);
@@ -322,7 +325,27 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings,
             tally.offsets.push_back(cv::norm(press.cursor - cursor_before(click.start)));
         });
     }
+    auto in_span = [](double t, const std::pair<double, double>& span) {
+        return t >= span.first && t <= span.second;
+    };
+    for (const auto& span : clip.approaches) {
+        const bool pressed = std::any_of(presses.begin(), presses.end(),
+                                         [&](const Press& p) { return in_span(p.at, span); });
+        each(common, [&](Tally& tally) {
+            tally.approaches += 1;
+            tally.approaches_pressed += pressed ? 1 : 0;
+        });
+    }
     for (std::size_t i = 0; i < presses.size(); ++i) {
+        // A press answering an approach as fast as a push is not scored either way.
+        if (std::any_of(clip.approaches.begin(), clip.approaches.end(),
+                        [&](const auto& span) { return in_span(presses[i].at, span); })) {
+            if (misses != nullptr) {
+                std::fprintf(misses, "approach press %s at %.2f s\n", clip.name.c_str(),
+                             presses[i].at);
+            }
+            continue;
+        }
         const bool in_motion =
             std::any_of(clip.motion_spans.begin(), clip.motion_spans.end(), [&](const auto& span) {
                 return presses[i].at >= span.first && presses[i].at <= span.second;

@@ -25,6 +25,7 @@ struct TrackedClip {
     std::vector<std::pair<std::string, std::string>> conditions;
     std::vector<scene::IntendedClick> clicks;
     std::vector<std::pair<double, double>> motion_spans;  // s: non-push motion, for false clicks
+    std::vector<std::pair<double, double>> approaches;    // s: push-fast, unmeant; not scored
     double aspect = 4.0 / 3.0;                            // frame width / height
     double seconds = 0;
     std::vector<core::FrameResult> results;  // one a frame, in order
@@ -62,7 +63,11 @@ struct Tally {
     int presses = 0;         // all presses in push clips
     int matched = 0;         // of those, one for an intended click or drag
     double motion_seconds = 0;
-    int false_clicks = 0;           // presses during non-push motion
+    int false_clicks = 0;  // presses during non-push motion
+    // Approaches in motion clips as fast as a push (scene/approaches.hpp), and how many of them
+    // pressed: neither false clicks nor pushes.
+    int approaches = 0;
+    int approaches_pressed = 0;
     std::vector<double> latencies;  // s, push start -> press
     std::vector<double> offsets;    // device px, cursor at the press - cursor at push start
     // Intended clicks and drags that came out as another gesture: a right press, a double

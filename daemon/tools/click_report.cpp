@@ -76,6 +76,9 @@ void print_gestures(std::FILE* out, const Tallies& tallies) {
     std::fprintf(out, "| left click or drag taken for another gesture | %d | - | %s | - |\n",
                  all.gestures(), percent(all.left_as_other, all.gestures()).c_str());
     std::fprintf(out, "| wheel steps in non-push motion | %d | - | - | - |\n", all.false_wheel);
+    std::fprintf(out,
+                 "| approaches as fast as a push in non-push motion, pressed | %d | %s | - | - |\n",
+                 all.approaches, percent(all.approaches_pressed, all.approaches).c_str());
 }
 
 void print_sweep(std::FILE* out, const std::vector<SweepPoint>& points) {

@@ -21,14 +21,15 @@ ClickTruth read_click_truth(const std::string& truth) {
         std::istringstream words(line);
         std::string kind;
         if (!(words >> kind)) continue;
-        if (kind == "motion") {
+        if (kind == "motion" || kind == "approach") {
             double from = 0;
             double to = 0;
             if (!(words >> from >> to) || to <= from) {
-                throw InputError(truth + ":" + std::to_string(number) +
-                                 ": motion: expected FROM TO in seconds, FROM < TO");
+                std::string message = truth;
+                message.append(":").append(std::to_string(number)).append(": ").append(kind);
+                throw InputError(message.append(": expected FROM TO in seconds, FROM < TO"));
             }
-            result.motion_spans.emplace_back(from, to);
+            (kind == "motion" ? result.motion_spans : result.approaches).emplace_back(from, to);
             continue;
         }
         scene::IntendedClick click;
@@ -50,7 +51,7 @@ ClickTruth read_click_truth(const std::string& truth) {
             message += kind;
             message +=
                 ": unknown line (allowed: click, drag, right, double, scroll_up, scroll_down, "
-                "motion)";
+                "motion, approach)";
             throw InputError(message);
         }
         if (!(words >> click.start >> click.press >> click.release) ||

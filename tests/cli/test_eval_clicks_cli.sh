@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # raypoint eval-clicks --trace end to end on the CI gesture subset: one header and one line a
 # frame for the clip named, in the documented columns, with the presses that went out; a name
-# that is no clip answered with one line on stderr before anything is tracked.
+# that is no clip answered with one line on stderr before anything is tracked. Then a recorded
+# clip with its truth file: motion and approach spans scored as docs/clicks.md says.
 # usage: test_eval_clicks_cli.sh RAYPOINT
 set -u
 raypoint=$1
@@ -28,6 +29,26 @@ awk 'NR > 1 && $1 <= last { bad = 1 } { last = $1 } END { exit bad }' "$work/fra
   fail "times do not increase"
 grep -q ' pressed +left$' "$work/frames.txt" || fail "no left press in push-000's trace"
 grep -q ' -left$' "$work/frames.txt" || fail "no left release in push-000's trace"
+
+# A recorded clip's truth: its three pushes as non-push motion are three false clicks; as an
+# approach (a push not meant), none, and the approach is counted pressed.
+timeout 240 "$raypoint" eval-clicks --set-name ci --write "$work/clip" --trace push-000 \
+  > /dev/null 2>&1 || fail "eval-clicks --write exited $?"
+clip=$work/clip/push-000.mp4
+printf 'motion 0 30\n' > "$clip.clicks"
+"$raypoint" eval-clicks --set-name none "$clip" > "$work/motion.txt" 2>&1 ||
+  fail "eval-clicks on a recorded clip exited $?"
+grep -Eq '^\| all \|.*\| 3 \| [0-9.]+ \|$' "$work/motion.txt" ||
+  fail "expected 3 false clicks: $(grep '^| all' "$work/motion.txt")"
+printf 'approach 0 30 # the pushes, unmeant\n' > "$clip.clicks"
+"$raypoint" eval-clicks --set-name none "$clip" > "$work/approach.txt" 2>&1 ||
+  fail "eval-clicks on a recorded clip exited $?"
+grep -Eq '^\| all \|.*\| 0 \| - \|$' "$work/approach.txt" ||
+  fail "expected no false click: $(grep '^| all' "$work/approach.txt")"
+grep -q '^| approaches as fast as a push in non-push motion, pressed | 1 | 100.0% (1/1) |' \
+  "$work/approach.txt" || fail "expected the approach pressed: $(grep approach "$work/approach.txt")"
+printf 'approach 5 4\n' > "$clip.clicks"
+expect_error 1 "approach: expected FROM TO in seconds, FROM < TO" eval-clicks --set-name none "$clip"
 
 if [ "$failures" -ne 0 ]; then
   echo "$failures failures"

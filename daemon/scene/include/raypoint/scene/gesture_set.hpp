@@ -47,11 +47,20 @@ struct GestureClip {
     // Conditions for the per-condition table, in this order: target, background, fps, camera.
     std::vector<std::pair<std::string, std::string>> conditions;
     std::vector<IntendedClick> clicks;  // sorted by start
-    // The span of non-push motion counted for false clicks (from when clicks are allowed); empty
-    // (from == to) for push clips.
-    double motion_from = 0;
-    double motion_to = 0;
+    // The spans of non-push motion counted for false clicks (from when clicks are allowed, less
+    // the approaches); none for push clips.
+    std::vector<std::pair<double, double>> motion_spans;
+    // Spans of a motion clip in which its path comes closer as fast as a push
+    // (target_push_depth within target_push_seconds, approaches.hpp): a press there is neither
+    // false nor a push's.
+    std::vector<std::pair<double, double>> approaches;
 };
+
+// The pushes the set's targets are stated for: at least 15% closer within 0.6 s.
+inline constexpr double target_push_depth = 0.15;
+inline constexpr double target_push_seconds = 0.6;
+// A press up to this long after such an approach answers it.
+inline constexpr double approach_press_seconds = 0.3;
 
 // "full": 110 push clips (330 pushes), 30 motion clips (about 11 minutes of non-push motion) and
 // 20 clips each of right clicks, double clicks and scrolls (60 gestures each);
