@@ -107,6 +107,12 @@ std::vector<Key> output_keys() {
             "release_rise to release): one odd frame neither presses nor releases",
             [](auto& c) -> auto& { return c.core.pointer.click.press_hold_seconds; }),
         real_key(
+            "click", "jump_hold_seconds", 0.0, 1.0,
+            "seconds of frame time a rise that jumps from under start_rise to press_rise in one "
+            "frame must stay there to press, when longer than press_hold_seconds: a push from "
+            "rest grows over several frames, a region taking in a passing object in one",
+            [](auto& c) -> auto& { return c.core.pointer.click.jump_hold_seconds; }),
+        real_key(
             "click", "release_drop", 0.0, 0.9,
             "the button also comes up when sqrt(area) falls this far below its largest while "
             "down (0.25 = 25%; 0 = off): a drag that changed the size still releases",

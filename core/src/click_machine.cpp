@@ -159,8 +159,15 @@ bool ClickMachine::held(bool condition, Timestamp since) noexcept {
         held_since_.reset();
         return false;
     }
-    if (!held_since_) held_since_ = since;
-    return seconds_since(*held_since_) >= settings_.press_hold_seconds;
+    if (!held_since_) {
+        held_since_ = since;
+        // Only the press's hold (RISING): the rise came from under start_rise on this frame.
+        held_jump_ = state_ == ClickState::rising && now_ <= rising_at_;
+    }
+    const double hold = held_jump_
+                            ? std::max(settings_.press_hold_seconds, settings_.jump_hold_seconds)
+                            : settings_.press_hold_seconds;
+    return seconds_since(*held_since_) >= hold;
 }
 
 void ClickMachine::confirm() noexcept {

@@ -35,6 +35,7 @@ Settings paper_settings() {
     click.release_rise = 0.10;
     click.push_seconds = 0.25;
     click.press_hold_seconds = 0.0;
+    click.jump_hold_seconds = 0.0;
     click.release_drop = 0.0;
     click.release_share = 0.0;
     click.release_raw_seconds = 0.0;

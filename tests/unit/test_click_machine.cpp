@@ -229,6 +229,7 @@ TEST(ClickMachine, ReleasesByItselfWhenTheTargetGoesOrIsNotReady) {
     // The machine on its own, without the controller's guard: a press, then no target.
     ClickSettings settings;  // the defaults (press at +15% within 0.25 s), pressing at once
     settings.press_hold_seconds = 0.0;
+    settings.jump_hold_seconds = 0.0;
     ClickMachine machine{settings};
     EXPECT_EQ(machine.step(0, 0.2, true).state, ClickState::idle);
     const ClickStep press = machine.step(100'000, 0.26, true);

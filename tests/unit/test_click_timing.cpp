@@ -99,6 +99,62 @@ TEST(ClickMachine, TheHoldCountsFromWhereARiseUnderWayCrossedThePress) {
     // clang-format on
 }
 
+// jump_hold_seconds 0.06 beside press_hold_seconds 0.03, at 30 fps (rows 33-34 ms apart).
+PointerSettings jump_held_depth() {
+    PointerSettings s = depth();
+    s.click.press_hold_seconds = 0.03;
+    s.click.jump_hold_seconds = 0.06;
+    return s;
+}
+
+TEST(ClickMachine, ARiseThatJumpsFromTheBaselineIsHeldLonger) {
+    // A passing object taken into the region: +25% in one frame, then its share shrinking as it
+    // passes. Held 0.033 s it would press (press_hold_seconds); it is under the press before
+    // 0.06 s. Then a push from rest, growing over three frames, presses on press_hold_seconds.
+    PointerController pointer(jump_held_depth(), aspect);
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x     y     size    click         out
+        {   0,   T,       0.5,  0.5,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 233,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 267,   T,       0.5,  0.5,  0.250,  "rising",     ""},       // +25% in one frame
+        { 300,   T,       0.5,  0.5,  0.242,  "rising",     ""},       // +21%: 0.033 s held
+        { 333,   T,       0.5,  0.5,  0.236,  "rising",     ""},       // +18%: under the press
+        { 367,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 800,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 833,   T,       0.5,  0.5,  0.215,  "rising",     ""},       // +7.5%
+        { 867,   T,       0.5,  0.5,  0.235,  "rising",     ""},       // +17.5%
+        { 900,   T,       0.5,  0.5,  0.250,  "rising",     ""},       // +25%, crossed at 878
+        { 933,   T,       0.5,  0.5,  0.260,  "pressed",    "+left"},  // held 0.055 s
+    });
+    // clang-format on
+}
+
+TEST(ClickMachine, AJumpThatStaysPressesAfterTheJumpHold) {
+    // The same jump staying up is a push that came in one frame (or a blurred one): it presses
+    // once it has held 0.06 s, two frames later at 30 fps. Off (0), one frame later.
+    PointerSettings settings = jump_held_depth();
+    const std::vector<test::PointerRow> rows = {
+        //  ms   tracker  x     y     size    click         out
+        {0, T, 0.5, 0.5, picked, "inactive", ""},
+        {200, T, 0.5, 0.5, 0.200, "idle", ""},
+        {233, T, 0.5, 0.5, 0.200, "idle", ""},
+        {267, T, 0.5, 0.5, 0.250, "rising", ""},
+        {300, T, 0.5, 0.5, 0.252, "rising", ""},
+        {333, T, 0.5, 0.5, 0.254, "pressed", "+left"},  // held 0.066 s
+    };
+    PointerController held(settings, aspect);
+    play(held, rows);
+    settings.click.jump_hold_seconds = 0.0;
+    std::vector<test::PointerRow> off = rows;
+    off[4].click = "pressed";
+    off[4].out = "+left";
+    off[5].out = "";
+    PointerController once(settings, aspect);
+    play(once, off);
+}
+
 TEST(ClickMachine, TheReleaseHoldCountsFromWhereAPullBackUnderWayCrossedIt) {
     // press_hold_seconds 0.05 at 10 fps: the pull-back is at 0.235 at 700 ms (under halfway
     // from the largest size, 0.270, to the release's level, 0.220) and at 0.205 at 800: it

@@ -62,6 +62,7 @@ inline core::PointerSettings depth_pointer() {
     s.click.drag_seconds = 0.8;
     s.click.baseline_seconds = 1000.0;
     s.click.press_hold_seconds = 0.0;
+    s.click.jump_hold_seconds = 0.0;
     s.click.release_drop = 0.0;
     s.click.release_share = 0.0;
     s.click.glitch_jump = 0.0;

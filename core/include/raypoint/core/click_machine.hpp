@@ -114,7 +114,8 @@ class ClickMachine {
     // The time `fraction` of the way from the previous frame to this one.
     Timestamp between_frames(double fraction) const noexcept;
     // Whether `condition` has held for press_hold_seconds up to this frame, counting from
-    // `since` (no later than now) when it begins to hold on this frame.
+    // `since` (no later than now) when it begins to hold on this frame; for jump_hold_seconds
+    // when longer, if it began in RISING on the frame the rise came from under start_rise.
     bool held(bool condition, Timestamp since) noexcept;
     // RISING: when the rise crossed press_rise, placed between this frame and the previous one
     // when the push was under way on that frame already; this frame's time otherwise.
@@ -166,6 +167,7 @@ class ClickMachine {
     // HOLDING: where the hold began (x, y frame widths), and since when the target's size has
     // been still (within start_rise of still_scale_).
     cv::Point2d held_at_;
+    bool held_jump_ = false;  // the hold began on the frame the rise jumped from the baseline
     double still_scale_ = 0.0;
     Timestamp still_since_ = 0;
     // HOLDING: the largest size within hold_flicker_seconds, as a peak held until that long
