@@ -8,6 +8,7 @@ namespace raypoint::core {
 
 void DepthSignal::reset() noexcept {
     previous_ = 0.0;
+    before_previous_ = 0.0;
     gain_ = 1.0;
     pending_ = false;
     given_back_ = false;
@@ -72,7 +73,18 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         // with the light, on that frame, and the centroid need not move.
         const bool relit =
             settings_.glitch_light > 0.0 && light_change >= settings_.glitch_light && large;
-        if (shifted || leap || relit) {
+        // The centroid back where it was two frames ago, after a jump on the frame between
+        // that a frame interval's step allowance let through (glitch_step per 1/30 s, so at
+        // 10 fps a leak's +20% passes): that frame was the glitch, and this one is its end.
+        // Taking this step out would keep the leak's size in the signal until it starts over.
+        const bool leak_ended =
+            frames > 1.0 && before_previous_ > 0.0 &&
+            std::abs(previous_ / before_previous_ - 1.0) >= settings_.glitch_step &&
+            cv::norm(previous_centroid_ - before_previous_centroid_) >=
+                settings_.glitch_jump * before_previous_ &&
+            cv::norm(centroid - before_previous_centroid_) <=
+                (1.0 - settings_.glitch_return) * moved;
+        if ((shifted || leap || relit) && !leak_ended) {
             // Given back when the centroid comes back: only a step whose centroid jumped can
             // show that it was the centroid's alone (a still centroid is always "back").
             pending_ = shifted;
@@ -86,6 +98,9 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
             absorbed_ = true;
         }
     }
+    // A frame whose step was taken out or given back is no leak's frame before.
+    before_previous_ = absorbed_ || given_back_ ? 0.0 : previous_;
+    before_previous_centroid_ = previous_centroid_;
     previous_ = *scale;
     previous_centroid_ = centroid;
     return *scale * gain_;

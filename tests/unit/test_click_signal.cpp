@@ -218,6 +218,29 @@ TEST(DepthSignal, ALeakThatClosesFramesLaterIsTakenOutAsItsOpeningWas) {
     }
 }
 
+TEST(DepthSignal, TheEndOfALeakTheFrameIntervalLetThroughIsNotTakenOut) {
+    // 10 fps: a held push (0.26) leaks into the background for one frame, +19% with the
+    // centroid 0.19 of the size away: under the 24% a 10 fps frame allows, so it stays in.
+    // The next frame the centroid is back and the size is down 29% (the leak gone, the hand
+    // coming back): the leak's end. Taken out, the signal would keep the leak's 0.31 while the
+    // hand pulls back, and a press would never come up.
+    const cv::Point2d here(0.5, 0.4);
+    const cv::Point2d leaked = here + cv::Point2d(0, 0.05);
+    constexpr Timestamp frame = 100'000;
+    DepthSignal signal(glitches().click);
+    EXPECT_DOUBLE_EQ(*signal.update(0.26, here, 0), 0.26);
+    EXPECT_DOUBLE_EQ(*signal.update(0.31, leaked, frame), 0.31);
+    EXPECT_FALSE(signal.absorbed());
+    EXPECT_DOUBLE_EQ(*signal.update(0.22, here, 2 * frame), 0.22);
+    EXPECT_FALSE(signal.absorbed());
+    // The same drop with the centroid not back is a piece leaving: taken out.
+    DepthSignal elsewhere(glitches().click);
+    elsewhere.update(0.26, here, 0);
+    elsewhere.update(0.31, leaked, frame);
+    EXPECT_NEAR(*elsewhere.update(0.22, leaked + cv::Point2d(0.05, 0), 2 * frame), 0.31, 1e-12);
+    EXPECT_TRUE(elsewhere.absorbed());
+}
+
 TEST(DepthSignal, ARegionThatKeepsItsPieceWithTheCentroidBackIsNotTakenOutAgain) {
     // The same strip, but the region grows on with the centroid back: the piece is still in
     // (a region can bring its centroid back and keep it), and the push goes on from the level

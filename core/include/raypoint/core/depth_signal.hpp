@@ -11,10 +11,12 @@
 // frame blurred (at 10 fps a push of 0.25 s is one frame), and a size back too was a one-frame
 // glitch. A piece that leaves again later, within glitch_return_seconds, the size stepping
 // back the other way with the centroid back, has that step absorbed too: the push's level
-// stands. A step faster than any push (glitch_leap per 1/30 s), and a step of glitch_step on a
-// frame whose light jumped (glitch_light), are absorbed whatever the centroid does, and never
-// given back.
-// Pure: no allocation, no exceptions.
+// stands. A frame whose step the frame interval let through (at 10 fps, 3x glitch_step) with
+// its centroid jumping, followed by the centroid back where it was, was a leak: the step back
+// is not absorbed, or the leak's size would stay in the signal. A step faster than any push
+// (glitch_leap per 1/30 s), and a step of glitch_step on a frame whose light jumped (glitch_light),
+// are absorbed whatever the centroid does, and never given back. Pure: no allocation, no
+// exceptions.
 
 #include <optional>
 
@@ -57,6 +59,9 @@ class DepthSignal {
     double previous_ = 0.0;        // the raw scale of the previous frame; 0: none
     Timestamp previous_time_ = 0;  // the previous frame's timestamp
     cv::Point2d previous_centroid_;
+    double before_previous_ = 0.0;  // the raw scale two frames back; 0: none, or its step was
+                                    // taken out or given back
+    cv::Point2d before_previous_centroid_;
     double gain_ = 1.0;  // signal = raw scale x gain; each absorbed step rescales it
     // The step absorbed on the previous frame: the centroid, scale and gain before it. When
     // the centroid is back the next frame, the jump was the centroid's alone (a blurred
