@@ -181,6 +181,7 @@ void ClickMachine::confirm() noexcept {
         // Which gesture it is shows only after the press: no button until then.
         state_ = ClickState::holding;
         held_at_ = where_;
+        held_step_offset_ = step_offset_;
         still_scale_ = scale_;
         still_since_ = now_;
         peak_held_ = scale_;
@@ -352,8 +353,13 @@ void ClickMachine::on_holding() noexcept {
 bool ClickMachine::moved_while_held() noexcept {
     // A step the depth signal took out moved the centroid with the region, and the smoothed
     // position follows it for several frames: the hold counts from where that left it.
-    if (within_step(settings_.hold_settle_seconds)) held_at_ = where_;
-    const cv::Point2d moved = where_ - held_at_;
+    if (within_step(settings_.hold_settle_seconds)) {
+        held_at_ = where_;
+        held_step_offset_ = step_offset_;
+    }
+    // At 10 fps a step the depth signal left in, as a push's possible growth, moved it too: a
+    // held push does not grow by glitch_step in a frame, so the region did.
+    const cv::Point2d moved = where_ - held_at_ - (step_offset_ - held_step_offset_);
     if (cv::norm(moved) <= settings_.hold_radius) return false;
     if (settings_.scroll_gain > 0.0 && std::abs(moved.y) > std::abs(moved.x)) {
         state_ = ClickState::scrolling;

@@ -26,6 +26,7 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
     absorbed_ = false;
     given_back_ = false;
     jumped_ = false;
+    stepped_ = false;
     if (!scale || !(*scale > 0.0)) {
         reset();
         return std::nullopt;
@@ -65,6 +66,11 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         jumped_ = settings_.glitch_jump > 0.0 && jump >= settings_.glitch_jump * frames;
         const bool large = std::abs(step) >= settings_.glitch_step * frames;
         const bool shifted = settings_.glitch_jump > 0.0 && large && jump >= settings_.glitch_jump;
+        // The same step against the allowance between frames 1/30 s apart: a held push does not
+        // grow, so at 10 fps too a region that steps by glitch_step with its centroid is the
+        // region changing, though a push's step that size between those frames is left in.
+        stepped_ = settings_.glitch_jump > 0.0 && std::abs(step) >= settings_.glitch_step &&
+                   jump >= settings_.glitch_jump;
         // Faster than any push, whatever the centroid: a piece taken in straight above or
         // below the centroid hardly moves it. Per the frame's own interval, 60 fps included.
         const bool leap = settings_.glitch_leap > 0.0 && interval > 0.0 &&

@@ -44,7 +44,7 @@ void PointerController::release_down(PointerCommand& command) noexcept {
 void PointerController::follow_region(bool has_target, cv::Point2d centroid,
                                       Timestamp now) noexcept {
     if (!has_target) {
-        region_jumps_ = region_offset_ = last_jump_ = cv::Point2d();
+        region_jumps_ = region_offset_ = last_jump_ = step_jumps_ = step_offset_ = cv::Point2d();
         has_last_centroid_ = false;
     } else {
         cv::Point2d jump;
@@ -53,6 +53,8 @@ void PointerController::follow_region(bool has_target, cv::Point2d centroid,
         if (depth_.given_back()) region_jumps_ -= last_jump_;
         region_jumps_ += jump;
         last_jump_ = jump;
+        if (has_last_centroid_ && depth_.stepped() && !depth_.absorbed())
+            step_jumps_ += centroid - last_centroid_;
         // As the tracker's smoothing passes the sum on to the position (Tracker::process: linear,
         // so the sum's share of the position is the sum smoothed alike).
         const double seconds =
@@ -60,11 +62,12 @@ void PointerController::follow_region(bool has_target, cv::Point2d centroid,
         const double weight =
             output_.smoothing == SmoothingKind::ema ? ema_weight_after(output_, seconds) : 0.0;
         region_offset_ = region_offset_ * weight + region_jumps_ * (1.0 - weight);
+        step_offset_ = step_offset_ * weight + step_jumps_ * (1.0 - weight);
         last_centroid_ = centroid;
         last_centroid_at_ = now;
         has_last_centroid_ = true;
     }
-    clicker_.set_region(region_jumps_, region_offset_);
+    clicker_.set_region(region_jumps_, region_offset_, step_offset_);
 }
 
 PointerCommand PointerController::release_all() noexcept {

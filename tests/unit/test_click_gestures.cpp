@@ -361,5 +361,39 @@ TEST(ClickGestures, ARegionThatTakesInAPieceWhileHeldDoesNotScroll) {
     // clang-format on
 }
 
+// At 10 fps the depth signal leaves a step of up to 24% in as a push's possible growth (3x
+// glitch_step): position unsmoothed, so the step's centroid jump is passed on at once.
+const OutputSettings unsmoothed{SmoothingKind::ema, 0.0};
+
+TEST(ClickGestures, ARegionStepLeftInAt10FpsWhileHeldDoesNotScroll) {
+    // The held push's region takes in a piece below the hand: +20% (left in) with the centroid
+    // 0.06 frame widths down, 0.23 of the size (past glitch_jump, under its 10 fps allowance).
+    // Past the hold radius of 0.05, but a held push does not grow 8% in a frame: the region
+    // did, and the hold leaves its jump out.
+    PointerController pointer(gestures_with_glitches(), aspect, unsmoothed);
+    hold_a_push(pointer);
+    // clang-format off
+    play(pointer, {
+        {1100,   T,       0.500, 0.580, 0.312,  "right_armed",   ""},   // +20%, 0.06 down
+        {1200,   T,       0.500, 0.580, 0.312,  "right_armed",   ""},
+        {1300,   T,       0.500, 0.580, 0.200,  "refractory",    "+right -right"},
+    });
+    // clang-format on
+}
+
+TEST(ClickGestures, AHeldPushMovingOnAfterARegionStepAt10FpsScrolls) {
+    // The same step, then the hand moves on down 0.06 frame widths: the hold left out the
+    // step's jump only, and the motion after it scrolls.
+    PointerController pointer(gestures_with_glitches(), aspect, unsmoothed);
+    hold_a_push(pointer);
+    // clang-format off
+    play(pointer, {
+        {1100,   T,       0.500, 0.580, 0.312,  "right_armed",   ""},
+        {1200,   T,       0.500, 0.620, 0.312,  "right_armed",   ""},   // 0.03 on
+        {1300,   T,       0.500, 0.660, 0.312,  "scrolling",     "wheel -6 hires -720"},
+    });
+    // clang-format on
+}
+
 }  // namespace
 }  // namespace raypoint::core

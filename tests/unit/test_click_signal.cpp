@@ -231,6 +231,7 @@ TEST(DepthSignal, TheEndOfALeakTheFrameIntervalLetThroughIsNotTakenOut) {
     EXPECT_DOUBLE_EQ(*signal.update(0.26, here, 0), 0.26);
     EXPECT_DOUBLE_EQ(*signal.update(0.31, leaked, frame), 0.31);
     EXPECT_FALSE(signal.absorbed());
+    EXPECT_TRUE(signal.stepped());  // past glitch_step and glitch_jump between two frames
     EXPECT_DOUBLE_EQ(*signal.update(0.22, here, 2 * frame), 0.22);
     EXPECT_FALSE(signal.absorbed());
     // The same drop with the centroid not back is a piece leaving: taken out.
@@ -239,6 +240,10 @@ TEST(DepthSignal, TheEndOfALeakTheFrameIntervalLetThroughIsNotTakenOut) {
     elsewhere.update(0.31, leaked, frame);
     EXPECT_NEAR(*elsewhere.update(0.22, leaked + cv::Point2d(0.05, 0), 2 * frame), 0.31, 1e-12);
     EXPECT_TRUE(elsewhere.absorbed());
+    EXPECT_TRUE(elsewhere.stepped());
+    // A step under glitch_step between the frames is no region step, whatever the centroid.
+    EXPECT_NEAR(*elsewhere.update(0.23, here, 3 * frame), 0.23 * 0.31 / 0.22, 1e-12);
+    EXPECT_FALSE(elsewhere.stepped());
 }
 
 TEST(DepthSignal, ARegionThatKeepsItsPieceWithTheCentroidBackIsNotTakenOutAgain) {

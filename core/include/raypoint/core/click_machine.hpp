@@ -63,9 +63,12 @@ class ClickMachine {
     // Before each step(): the centroid's jumps on the frames whose size step the depth signal
     // took out, summed since the target was picked (frame widths), and that sum as the
     // position's smoothing has passed it on (ClickSettings::push_region_jump). Zero: none.
-    void set_region(cv::Point2d jumps, cv::Point2d offset) noexcept {
+    // step_offset: the same, as passed on, for the steps that DepthSignal::stepped() saw and
+    // absorbed() left in; a held push's position leaves it out.
+    void set_region(cv::Point2d jumps, cv::Point2d offset, cv::Point2d step_offset = {}) noexcept {
         region_jumps_ = jumps;
         region_offset_ = offset;
+        step_offset_ = step_offset;
     }
     // scale: sqrt(area) of the tracked target, or nullopt when there is none (not TRACKING, or
     // the frame that picks a target). ready: tracked for min_tracking_seconds (PointerController
@@ -148,10 +151,12 @@ class ClickMachine {
     cv::Point2d last_region_offset_;
     cv::Point2d push_region_jumps_;
     cv::Point2d push_region_offset_;
-    double last_raw_ = 0.0;    // the previous frame's raw scale
-    double last_scale_ = 0.0;  // the previous frame's scale (the depth signal); 0: none
-    double push_raw_ = 0.0;    // the raw scale on the frame before RISING
-    double push_peak_ = 0.0;   // RISING: the largest scale since the push began
+    cv::Point2d step_offset_;       // set_region()'s
+    cv::Point2d held_step_offset_;  // HOLDING, RIGHT_ARMED: step_offset_ where held_at_ was set
+    double last_raw_ = 0.0;         // the previous frame's raw scale
+    double last_scale_ = 0.0;       // the previous frame's scale (the depth signal); 0: none
+    double push_raw_ = 0.0;         // the raw scale on the frame before RISING
+    double push_peak_ = 0.0;        // RISING: the largest scale since the push began
     Timestamp pressed_at_ = 0;
     Timestamp released_at_ = 0;
     // Since when the rise has been at press_rise (RISING) or at release_rise (PRESSED,

@@ -48,6 +48,10 @@ class DepthSignal {
     // Whether the centroid jumped on the last update by glitch_jump of the size (per 1/30 s),
     // whatever the size did: the region changing shape, or the target setting off sideways.
     bool jumped() const noexcept { return jumped_; }
+    // Whether the size stepped on the last update by glitch_step with a centroid jump of
+    // glitch_jump of the size, both per frame whatever the interval: at 30 fps and faster the
+    // steps absorbed() takes out, at 10 fps also those its allowance for a push leaves in.
+    bool stepped() const noexcept { return stepped_; }
     void reset() noexcept;
 
   private:
@@ -76,6 +80,7 @@ class DepthSignal {
     bool absorbed_ = false;
     bool given_back_ = false;
     bool jumped_ = false;
+    bool stepped_ = false;
 };
 
 }  // namespace raypoint::core

@@ -59,6 +59,10 @@ class PointerController {
     // frame's interval; One Euro's is taken as 0, passed on at once).
     cv::Point2d region_jumps_;
     cv::Point2d region_offset_;
+    // The same for the steps DepthSignal::stepped() saw and absorbed() left in (at 10 fps, as
+    // a push's possible growth): HOLDING's position leaves them out.
+    cv::Point2d step_jumps_;
+    cv::Point2d step_offset_;
     cv::Point2d last_centroid_;
     cv::Point2d last_jump_;
     Timestamp last_centroid_at_ = 0;
