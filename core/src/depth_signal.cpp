@@ -15,8 +15,25 @@ void DepthSignal::reset() noexcept {
     absorbed_ = false;
 }
 
+bool DepthSignal::back_to(cv::Point2d centroid, cv::Point2d where, double jump) const noexcept {
+    return cv::norm(centroid - where) <= (1.0 - settings_.glitch_return) * jump;
+}
+
 bool DepthSignal::returned(cv::Point2d centroid) const noexcept {
-    return cv::norm(centroid - before_centroid_) <= (1.0 - settings_.glitch_return) * before_jump_;
+    return back_to(centroid, before_centroid_, before_jump_);
+}
+
+// The previous frame stepped by glitch_step or more with its centroid jumping glitch_jump of the
+// size (per 1/30 s), and its interval's allowance (glitch_step per 1/30 s: at 10 fps a leak's
+// +20% passes) let the step through; this frame's centroid is back where it was before it. That
+// frame was the glitch and this one is its end: taking this step out would keep the leak's size
+// in the signal until it starts over. At 30 fps the leak's own frame is taken out.
+bool DepthSignal::leak_ended(cv::Point2d centroid, double moved) const noexcept {
+    return previous_frames_ > 1.0 && before_previous_ > 0.0 &&
+           std::abs(previous_ / before_previous_ - 1.0) >= settings_.glitch_step &&
+           cv::norm(previous_centroid_ - before_previous_centroid_) >=
+               settings_.glitch_jump * before_previous_ &&
+           back_to(centroid, before_previous_centroid_, moved);
 }
 
 std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point2d centroid,
@@ -31,6 +48,11 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         reset();
         return std::nullopt;
     }
+    // The time since the last frame in frames 1/30 s apart.
+    const double interval = static_cast<double>(timestamp - previous_time) / (1e6 / 30.0);
+    // glitch_step is a step between frames 1/30 s apart: a push brings the target closer by
+    // three times as much between frames at 10 fps (a quick push is 2-3 frames there).
+    const double frames = std::max(1.0, interval);
     // The step absorbed on the frame before, or within glitch_return_seconds before.
     const bool next = pending_ && !pending_seen_;
     const bool later =
@@ -57,11 +79,6 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         // region that takes in or drops a piece moves it by about the piece's share.
         const double moved = cv::norm(centroid - previous_centroid_);  // frame widths
         const double jump = moved / previous_;
-        // The time since the last frame in frames 1/30 s apart.
-        const double interval = static_cast<double>(timestamp - previous_time) / (1e6 / 30.0);
-        // glitch_step is a step between frames 1/30 s apart: a push brings the target closer
-        // by three times as much between frames at 10 fps (a quick push is 2-3 frames there).
-        const double frames = std::max(1.0, interval);
         // At 10 fps a push's own centroid drifts three times as far between frames.
         jumped_ = settings_.glitch_jump > 0.0 && jump >= settings_.glitch_jump * frames;
         const bool large = std::abs(step) >= settings_.glitch_step * frames;
@@ -79,18 +96,7 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         // with the light, on that frame, and the centroid need not move.
         const bool relit =
             settings_.glitch_light > 0.0 && light_change >= settings_.glitch_light && large;
-        // The centroid back where it was two frames ago, after a jump on the frame between
-        // that a frame interval's step allowance let through (glitch_step per 1/30 s, so at
-        // 10 fps a leak's +20% passes): that frame was the glitch, and this one is its end.
-        // Taking this step out would keep the leak's size in the signal until it starts over.
-        const bool leak_ended =
-            frames > 1.0 && before_previous_ > 0.0 &&
-            std::abs(previous_ / before_previous_ - 1.0) >= settings_.glitch_step &&
-            cv::norm(previous_centroid_ - before_previous_centroid_) >=
-                settings_.glitch_jump * before_previous_ &&
-            cv::norm(centroid - before_previous_centroid_) <=
-                (1.0 - settings_.glitch_return) * moved;
-        if ((shifted || leap || relit) && !leak_ended) {
+        if ((shifted || leap || relit) && !leak_ended(centroid, moved)) {
             // Given back when the centroid comes back: only a step whose centroid jumped can
             // show that it was the centroid's alone (a still centroid is always "back").
             pending_ = shifted;
@@ -107,6 +113,7 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
     // A frame whose step was taken out or given back is no leak's frame before.
     before_previous_ = absorbed_ || given_back_ ? 0.0 : previous_;
     before_previous_centroid_ = previous_centroid_;
+    previous_frames_ = frames;
     previous_ = *scale;
     previous_centroid_ = centroid;
     return *scale * gain_;

@@ -234,6 +234,13 @@ TEST(DepthSignal, TheEndOfALeakTheFrameIntervalLetThroughIsNotTakenOut) {
     EXPECT_TRUE(signal.stepped());  // past glitch_step and glitch_jump between two frames
     EXPECT_DOUBLE_EQ(*signal.update(0.22, here, 2 * frame), 0.22);
     EXPECT_FALSE(signal.absorbed());
+    // The leak's end coming 1/30 s later (the camera's rate back up): the allowance that let
+    // the leak through was its own frame's, so the end is still kept.
+    DepthSignal faster(glitches().click);
+    faster.update(0.26, here, 0);
+    faster.update(0.31, leaked, frame);
+    EXPECT_DOUBLE_EQ(*faster.update(0.22, here, frame + 33'333), 0.22);
+    EXPECT_FALSE(faster.absorbed());
     // The same drop with the centroid not back is a piece leaving: taken out.
     DepthSignal elsewhere(glitches().click);
     elsewhere.update(0.26, here, 0);

@@ -15,8 +15,9 @@
 // its centroid jumping, followed by the centroid back where it was, was a leak: the step back
 // is not absorbed, or the leak's size would stay in the signal. A step faster than any push
 // (glitch_leap per 1/30 s), and a step of glitch_step on a frame whose light jumped (glitch_light),
-// are absorbed whatever the centroid does, and never given back. Pure: no allocation, no
-// exceptions.
+// are absorbed whatever the centroid does, and never given back.
+//
+// Pure: no allocation, no exceptions.
 
 #include <optional>
 
@@ -58,10 +59,16 @@ class DepthSignal {
     // Whether the centroid is back glitch_return of its jump from where it was before the
     // pending step.
     bool returned(cv::Point2d centroid) const noexcept;
+    // Whether `centroid` is within (1 - glitch_return) of `jump` (frame widths) of `where`.
+    bool back_to(cv::Point2d centroid, cv::Point2d where, double jump) const noexcept;
+    // The centroid back where it was two frames ago, after a step on the frame between that
+    // its interval's allowance let through (DepthSignal::update).
+    bool leak_ended(cv::Point2d centroid, double moved) const noexcept;
 
     ClickSettings settings_;
-    double previous_ = 0.0;        // the raw scale of the previous frame; 0: none
-    Timestamp previous_time_ = 0;  // the previous frame's timestamp
+    double previous_ = 0.0;         // the raw scale of the previous frame; 0: none
+    Timestamp previous_time_ = 0;   // the previous frame's timestamp
+    double previous_frames_ = 1.0;  // the previous frame's interval, frames 1/30 s apart (>= 1)
     cv::Point2d previous_centroid_;
     double before_previous_ = 0.0;  // the raw scale two frames back; 0: none, or its step was
                                     // taken out or given back
