@@ -20,9 +20,6 @@
 namespace raypoint::daemon {
 namespace {
 
-// The pushes the targets are stated for: at least 15% closer within 0.6 s.
-constexpr double target_depth = scene::target_push_depth;
-constexpr double target_seconds = scene::target_push_seconds;
 // Absolute mode: the device range mapped onto a full-HD screen's width, for offsets in pixels.
 constexpr double screen_px = 1920.0;
 
@@ -293,7 +290,9 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings,
         if (click.seconds > 0) {
             groups.push_back("depth " + bin(click.depth, {0.08, 0.15, 0.25, 0.4}, ""));
             groups.push_back("push " + bin(click.seconds, {0.15, 0.3, 0.6, 0.8}, " s"));
-            if (click.depth >= target_depth && click.seconds <= target_seconds)
+            // The pushes the targets are stated for: at least 15% closer within 0.6 s.
+            if (click.depth >= scene::target_push_depth &&
+                click.seconds <= scene::target_push_seconds)
                 groups.push_back("target");
         }
         const bool drag = click.kind == scene::GestureKind::drag;
@@ -347,9 +346,8 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings,
             continue;
         }
         const bool in_motion =
-            std::any_of(clip.motion_spans.begin(), clip.motion_spans.end(), [&](const auto& span) {
-                return presses[i].at >= span.first && presses[i].at <= span.second;
-            });
+            std::any_of(clip.motion_spans.begin(), clip.motion_spans.end(),
+                        [&](const auto& span) { return in_span(presses[i].at, span); });
         if (misses != nullptr && (in_motion || !used[i])) {
             std::fprintf(misses, "%s press %s at %.2f s\n", in_motion ? "false" : "unmatched",
                          clip.name.c_str(), presses[i].at);
