@@ -81,13 +81,15 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         const double jump = moved / previous_;
         // At 10 fps a push's own centroid drifts three times as far between frames.
         jumped_ = settings_.glitch_jump > 0.0 && jump >= settings_.glitch_jump * frames;
-        const bool large = std::abs(step) >= settings_.glitch_step * frames;
-        const bool shifted = settings_.glitch_jump > 0.0 && large && jump >= settings_.glitch_jump;
-        // The same step against the allowance between frames 1/30 s apart: a held push does not
-        // grow, so at 10 fps too a region that steps by glitch_step with its centroid is the
-        // region changing, though a push's step that size between those frames is left in.
+        // A step of glitch_step with a centroid jump of glitch_jump, between the two frames
+        // whatever their interval: a held push does not grow, so at 10 fps too such a step is
+        // the region changing, though a push's step that size between those frames is left in.
         stepped_ = settings_.glitch_jump > 0.0 && std::abs(step) >= settings_.glitch_step &&
                    jump >= settings_.glitch_jump;
+        const bool large = std::abs(step) >= settings_.glitch_step * frames;
+        // The same step against the frame interval's allowance for a push (frames >= 1, so
+        // large implies the step of stepped_): taken out.
+        const bool shifted = stepped_ && large;
         // Faster than any push, whatever the centroid: a piece taken in straight above or
         // below the centroid hardly moves it. Per the frame's own interval, 60 fps included.
         const bool leap = settings_.glitch_leap > 0.0 && interval > 0.0 &&
