@@ -44,10 +44,10 @@ preview realworld 125 difference-view --view difference
 plot interfering area-window-default
 plot interfering max-area-0.06 --set tracking.max_area=0.06
 # Press threshold: the push scene's two pushes peak at a rise of 0.35.
-plot push press-rise-0.20
+plot push press-rise-default
 plot push press-rise-0.40 --set click.press_rise=0.40
-# A loss and its recovery: RECOVERING's 16 points around the failed inner point (frame 42 of
-# the fast scene), and the whole clip's state band.
-preview fast 43 recovering
+# A recovery: RECOVERING's 16 points around the failed inner point (frame 44 of the fast
+# scene), and the whole clip's state band.
+preview fast 45 recovering
 plot fast fast-losses
 ls -l "$out"
