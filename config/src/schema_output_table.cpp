@@ -103,8 +103,8 @@ std::vector<Key> output_keys() {
             [](auto& c) -> auto& { return c.core.pointer.click.push_seconds; }),
         real_key(
             "click", "press_hold_seconds", 0.0, 1.0,
-            "seconds of frame time the rise must stay at press_rise to press (and at "
-            "release_rise to release): one odd frame neither presses nor releases",
+            "seconds of frame time the rise must stay at press_rise to press (at release_rise "
+            "to release, under start_rise to end an approach): one odd frame does none of them",
             [](auto& c) -> auto& { return c.core.pointer.click.press_hold_seconds; }),
         real_key(
             "click", "jump_hold_seconds", 0.0, 1.0,

@@ -291,7 +291,13 @@ void ClickMachine::on_rising() noexcept {
 }
 
 void ClickMachine::on_drifting() noexcept {
-    if (rise_ <= settings_.start_rise) state_ = ClickState::idle;
+    // Back under start_rise for press_hold_seconds, as a press is held: a region that drops a
+    // piece for one frame while the target leans in (60 fps: two frames) leaves the baseline
+    // behind the signal, and the next frame would start a push already at press_rise.
+    if (held(rise_ <= settings_.start_rise, now_)) {
+        state_ = ClickState::idle;
+        held_since_.reset();
+    }
     follow_baseline();
 }
 

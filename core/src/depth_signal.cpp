@@ -23,17 +23,20 @@ bool DepthSignal::returned(cv::Point2d centroid) const noexcept {
     return back_to(centroid, before_centroid_, before_jump_);
 }
 
-// The previous frame stepped by glitch_step or more with its centroid jumping glitch_jump of the
-// size (per 1/30 s), and its interval's allowance (glitch_step per 1/30 s: at 10 fps a leak's
-// +20% passes) let the step through; this frame's centroid is back where it was before it. That
-// frame was the glitch and this one is its end: taking this step out would keep the leak's size
-// in the signal until it starts over. At 30 fps the leak's own frame is taken out.
-bool DepthSignal::leak_ended(cv::Point2d centroid, double moved) const noexcept {
-    return previous_frames_ > 1.0 && before_previous_ > 0.0 &&
+// The previous frame stepped by glitch_step or more and was left in, and this frame undoes it:
+// its step goes the other way, and its centroid is back where it was before or its size within
+// glitch_step of what it was (a region flickering between two shapes comes back to the size, not
+// always to the same centroid). That frame was the glitch and this one is its end: taking this
+// step out would keep the glitch's size in the signal until it starts over. Two ways a glitch is
+// left in: at 10 fps its interval's allowance (glitch_step per 1/30 s) lets a leak's +20% pass; at
+// any rate a piece lost for one frame can move the centroid just under glitch_jump of the larger
+// size, and its return, measured against the smaller one, just over it.
+bool DepthSignal::leak_ended(double scale, cv::Point2d centroid, double moved) const noexcept {
+    return before_previous_ > 0.0 &&
            std::abs(previous_ / before_previous_ - 1.0) >= settings_.glitch_step &&
-           cv::norm(previous_centroid_ - before_previous_centroid_) >=
-               settings_.glitch_jump * before_previous_ &&
-           back_to(centroid, before_previous_centroid_, moved);
+           (scale > previous_) == (previous_ < before_previous_) &&
+           (back_to(centroid, before_previous_centroid_, moved) ||
+            std::abs(scale / before_previous_ - 1.0) < settings_.glitch_step);
 }
 
 std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point2d centroid,
@@ -98,7 +101,7 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
         // with the light, on that frame, and the centroid need not move.
         const bool relit =
             settings_.glitch_light > 0.0 && light_change >= settings_.glitch_light && large;
-        if ((shifted || leap || relit) && !leak_ended(centroid, moved)) {
+        if ((shifted || leap || relit) && !leak_ended(*scale, centroid, moved)) {
             // Given back when the centroid comes back: only a step whose centroid jumped can
             // show that it was the centroid's alone (a still centroid is always "back").
             pending_ = shifted;
@@ -115,7 +118,6 @@ std::optional<double> DepthSignal::update(std::optional<double> scale, cv::Point
     // A frame whose step was taken out or given back is no leak's frame before.
     before_previous_ = absorbed_ || given_back_ ? 0.0 : previous_;
     before_previous_centroid_ = previous_centroid_;
-    previous_frames_ = frames;
     previous_ = *scale;
     previous_centroid_ = centroid;
     return *scale * gain_;

@@ -297,5 +297,34 @@ TEST(ClickMachine, APushIsTimedFromCrossingToCrossingNotFrameToFrame) {
     // clang-format on
 }
 
+TEST(ClickMachine, OneFrameBackNearTheBaselineDoesNotEndADrift) {
+    // press_hold_seconds 0.05: a target leaning in drifts (+30%) with the baseline behind it;
+    // the region drops a piece for one frame (+3%) and has it back. Back to IDLE on that frame,
+    // the next would start a push already past the press and press a frame later. Held back
+    // near the baseline for two frames, the drift ends.
+    PointerController pointer(held_depth(), aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,  0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,  0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,  0.5,  0.206,  "idle",       ""},       // +3% a frame
+        { 400,   T,       0.5,  0.5,  0.212,  "rising",     ""},
+        { 500,   T,       0.5,  0.5,  0.218,  "rising",     ""},
+        { 600,   T,       0.5,  0.5,  0.224,  "rising",     ""},
+        { 700,   T,       0.5,  0.5,  0.230,  "rising",     ""},
+        { 800,   T,       0.5,  0.5,  0.236,  "drifting",   ""},       // too slow for a push
+        { 900,   T,       0.5,  0.5,  0.260,  "drifting",   ""},       // +30%
+        {1000,   T,       0.5,  0.5,  0.206,  "drifting",   ""},       // +3% for one frame
+        {1100,   T,       0.5,  0.5,  0.260,  "drifting",   ""},       // the piece back: no push
+        {1200,   T,       0.5,  0.5,  0.265,  "drifting",   ""},
+        {1300,   T,       0.5,  0.5,  0.205,  "drifting",   ""},       // back near the baseline
+        {1400,   T,       0.5,  0.5,  0.205,  "idle",       ""},       // held 0.1 s
+        {1500,   T,       0.5,  0.5,  0.230,  "rising",     ""},       // a real push now
+        {1600,   T,       0.5,  0.5,  0.250,  "rising",     ""},
+        {1700,   T,       0.5,  0.5,  0.255,  "pressed",    "+left"},
+    });
+    // clang-format on
+}
+
 }  // namespace
 }  // namespace raypoint::core

@@ -61,14 +61,13 @@ class DepthSignal {
     bool returned(cv::Point2d centroid) const noexcept;
     // Whether `centroid` is within (1 - glitch_return) of `jump` (frame widths) of `where`.
     bool back_to(cv::Point2d centroid, cv::Point2d where, double jump) const noexcept;
-    // The centroid back where it was two frames ago, after a step on the frame between that
-    // its interval's allowance let through (DepthSignal::update).
-    bool leak_ended(cv::Point2d centroid, double moved) const noexcept;
+    // Whether this frame undoes the frame before's step, which was left in: back the other way,
+    // the centroid or the size back where it was two frames ago (DepthSignal::update).
+    bool leak_ended(double scale, cv::Point2d centroid, double moved) const noexcept;
 
     ClickSettings settings_;
-    double previous_ = 0.0;         // the raw scale of the previous frame; 0: none
-    Timestamp previous_time_ = 0;   // the previous frame's timestamp
-    double previous_frames_ = 1.0;  // the previous frame's interval, frames 1/30 s apart (>= 1)
+    double previous_ = 0.0;        // the raw scale of the previous frame; 0: none
+    Timestamp previous_time_ = 0;  // the previous frame's timestamp
     cv::Point2d previous_centroid_;
     double before_previous_ = 0.0;  // the raw scale two frames back; 0: none, or its step was
                                     // taken out or given back
