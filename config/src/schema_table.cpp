@@ -201,6 +201,17 @@ const std::vector<Key>& schema() {
                 "seconds after a pick that it may follow the movement before it is estimated",
                 [](auto& c) -> auto& { return c.core.tracking.repick_seconds; }),
             real_key(
+                "tracking", "follow_movement", 0.0, 100.0,
+                "a centroid farther than this many region radii from the movement's chain, its "
+                "region holding under follow_share of the movement, is reported at the chain "
+                "(0: never)",
+                [](auto& c) -> auto& { return c.core.tracking.follow_movement; }),
+            real_key(
+                "tracking", "follow_share", 0.0, 1.0,
+                "a region holding at least this share of the movement keeps its centroid "
+                "(follow_movement)",
+                [](auto& c) -> auto& { return c.core.tracking.follow_share; }),
+            real_key(
                 "tracking", "extremity_motion", 0.0, 1.0,
                 "a region's far end is the target when this share of the movement is around it",
                 [](auto& c) -> auto& { return c.core.tracking.extremity_motion; }),

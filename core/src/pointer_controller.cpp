@@ -105,7 +105,8 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
             // Frame widths on both axes, as the hold radius is.
             const cv::Point2d where(position.x, position.y / frame_aspect_);
             const double raw = has_target ? std::sqrt(*frame.area) : 0.0;
-            const cv::Point2d centroid(frame.centroid.x, frame.centroid.y / frame_aspect_);
+            const cv::Point2d& region = frame.followed ? frame.region_centroid : frame.centroid;
+            const cv::Point2d centroid(region.x, region.y / frame_aspect_);
             const std::optional<double> scale =
                 depth_.update(has_target ? std::optional<double>(raw) : std::nullopt, centroid, now,
                               frame.light_change);

@@ -24,6 +24,7 @@ Settings paper_settings() {
     settings.tracking.abandon_grace = 0.0;
     settings.tracking.abandon_still_share = 0.0;
     settings.tracking.repick_difference = 0;
+    settings.tracking.follow_movement = 0.0;
     settings.tracking.search_weighting = SearchWeighting::all;
     settings.output.smoothing = SmoothingKind::ema;
     settings.output.ema_frame_rate = 0.0;

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
 #include "raypoint/core/tracker.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "image_evidence.hpp"
+#include "movement_chain.hpp"
 #include "raypoint/core/preprocess.hpp"
 #include "raypoint/core/smoothing.hpp"
 #include "raypoint/core/state_machine.hpp"
@@ -25,6 +27,7 @@ struct Tracker::Impl {
     StateMachine machine;
     PositionSmoother smoother;
     detail::ImageEvidence evidence;
+    detail::MovementChain chain;
     std::int64_t frames = 0;
     std::optional<double> reference_area;  // the area when tracking started (paper 4.3)
     EstimatorTrace empty_trace;
@@ -88,10 +91,40 @@ FrameResult Tracker::process(const FrameView& frame) noexcept {
     };
     if (step.recovery_from) result.recovery_from = to_fraction(*step.recovery_from);
     if (step.acquired || !step.has_target) d.reference_area.reset();
+    const bool following = d.settings.tracking.follow_movement > 0.0;
+    // The chain runs on every frame, with a target or without, so it is where the movement
+    // is when a target's region fails.
+    cv::Point2f chained;
+    bool has_chained = false;
+    if (following) {
+        d.chain.update(d.preprocessor.color(), frame.timestamp);
+        const auto target =
+            step.has_target ? std::optional<cv::Point2f>(step.estimate.centroid) : std::nullopt;
+        if (const auto point = d.chain.follow(target)) {
+            chained = *point;
+            has_chained = true;
+        }
+    }
     if (!step.has_target) return result;
     result.has_target = true;
     result.centroid = to_fraction(step.estimate.centroid);
     result.inner = to_fraction(step.estimate.inner);
+    if (following) {
+        // The region's radius in working pixels, at least 4 (a hand at the far end of a room;
+        // a pick, which has no area yet).
+        const double radius =
+            std::max(4.0, step.area_known ? std::sqrt(step.estimate.area / CV_PI) : 0.0);
+        const cv::Point2f centroid = step.estimate.centroid;
+        if (!has_chained ||
+            d.chain.share_near(centroid, radius + 4.0) >= d.settings.tracking.follow_share ||
+            cv::norm(chained - centroid) <= d.settings.tracking.follow_movement * radius) {
+            d.chain.restart(centroid);
+        } else {
+            result.region_centroid = result.centroid;
+            result.centroid = to_fraction(chained);
+            result.followed = true;
+        }
+    }
     if (!step.area_known) return result;
 
     const double area = step.estimate.area / (width * height);

@@ -134,15 +134,16 @@ void progress(int done, int total) {
 struct CachedResult {
     core::Timestamp timestamp;
     std::int32_t state;
-    std::int32_t flags;  // 1: has_position, 2: has_target, 4: recovered, 8: lost
+    std::int32_t flags;  // 1: has_position, 2: has_target, 4: recovered, 8: lost, 16: followed
     double x, y;         // smoothed position
     double area;         // < 0: none
     double centroid_x, centroid_y;
+    double region_x, region_y;  // the region's centroid when followed
     double inner_x, inner_y;
     double movement;
     double light_change;
 };
-constexpr const char* cache_suffix = ".results3";
+constexpr const char* cache_suffix = ".results4";
 
 TrackedClip cached_track(const scene::GestureClip& clip, const core::Settings& settings,
                          const std::string& dir, const std::string& set, std::uint32_t seed) {
@@ -163,9 +164,11 @@ TrackedClip cached_track(const scene::GestureClip& clip, const core::Settings& s
             r.has_target = (c.flags & 2) != 0;
             r.recovered = (c.flags & 4) != 0;
             r.lost = (c.flags & 8) != 0;
+            r.followed = (c.flags & 16) != 0;
             r.position = cv::Point3d(c.x, c.y, 0);
             if (c.area >= 0) r.area = c.area;
             r.centroid = cv::Point2d(c.centroid_x, c.centroid_y);
+            r.region_centroid = cv::Point2d(c.region_x, c.region_y);
             r.inner = cv::Point2d(c.inner_x, c.inner_y);
             r.movement = c.movement;
             r.light_change = c.light_change;
@@ -178,13 +181,21 @@ TrackedClip cached_track(const scene::GestureClip& clip, const core::Settings& s
     std::ofstream out(path, std::ios::binary);
     for (const core::FrameResult& r : tracked.results) {
         const std::int32_t flags = (r.has_position ? 1 : 0) | (r.has_target ? 2 : 0) |
-                                   (r.recovered ? 4 : 0) | (r.lost ? 8 : 0);
-        const CachedResult c{r.timestamp,  static_cast<std::int32_t>(r.state),
-                             flags,        r.position.x,
-                             r.position.y, r.area.value_or(-1.0),
-                             r.centroid.x, r.centroid.y,
-                             r.inner.x,    r.inner.y,
-                             r.movement,   r.light_change};
+                                   (r.recovered ? 4 : 0) | (r.lost ? 8 : 0) | (r.followed ? 16 : 0);
+        const CachedResult c{r.timestamp,
+                             static_cast<std::int32_t>(r.state),
+                             flags,
+                             r.position.x,
+                             r.position.y,
+                             r.area.value_or(-1.0),
+                             r.centroid.x,
+                             r.centroid.y,
+                             r.region_centroid.x,
+                             r.region_centroid.y,
+                             r.inner.x,
+                             r.inner.y,
+                             r.movement,
+                             r.light_change};
         out.write(reinterpret_cast<const char*>(&c), sizeof c);
     }
     if (!out) throw InputError(path + ": cannot write the cache");

@@ -47,7 +47,10 @@ TEST(NoAllocation, EstimateAfterTheFirstCallOnTheSameSize) {
     }
 }
 
-TEST(NoAllocation, TrackerProcessInSteadyState) {
+// With the movement's chain on (TrackingSettings::follow_movement) or off.
+class TrackerNoAllocation : public ::testing::TestWithParam<double> {};
+
+TEST_P(TrackerNoAllocation, ProcessInSteadyState) {
     // 40 frames of a disk moving on 640x480 BGR, built beforehand; 20 to warm up (the tracker
     // is tracking by then), 20 counted.
     constexpr int frames = 40;
@@ -57,6 +60,7 @@ TEST(NoAllocation, TrackerProcessInSteadyState) {
     Settings settings;
     settings.tracking.startup_seconds = 0.1;
     settings.tracking.search_threshold = 19200.0;  // see test_tracker.cpp
+    settings.tracking.follow_movement = GetParam();
     Tracker tracker(settings);
     const auto view = [&](int i) {
         return test::bgr_view(images[static_cast<std::size_t>(i)], Timestamp{i} * 33'333);
@@ -74,6 +78,8 @@ TEST(NoAllocation, TrackerProcessInSteadyState) {
     }
     EXPECT_EQ(count, 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(FollowMovement, TrackerNoAllocation, ::testing::Values(0.0, 1.0));
 
 }  // namespace
 }  // namespace raypoint::core

@@ -25,7 +25,10 @@ struct FrameResult {
     Timestamp timestamp = 0;
     TrackerState state = TrackerState::initializing;  // after this frame
     bool has_target = false;
-    cv::Point2d centroid;        // fractions; valid when has_target
+    cv::Point2d centroid;  // fractions; valid when has_target
+    // When followed: the region's own centroid, whose area `area` is. The depth signal reads
+    // it, as its jumps come with the region's steps, and the chain's point does not.
+    cv::Point2d region_centroid;
     std::optional<double> area;  // fraction; unknown on the frame a search picks a target
     cv::Point2d inner;           // fractions; valid when has_target
     bool has_position = false;
@@ -38,6 +41,7 @@ struct FrameResult {
     bool recovered = false;  // RECOVERING ran this frame and succeeded
     bool held = false;       // the estimate grew too fast: the last one stands (max_growth)
     bool lost = false;       // the target was dropped this frame
+    bool followed = false;   // the centroid is the movement's chain's (follow_movement)
     LossReason loss = LossReason::none;
     // Fractions: the failed inner point RECOVERING searched around this frame (for drawing).
     std::optional<cv::Point2d> recovery_from;
