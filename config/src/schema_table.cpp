@@ -212,6 +212,11 @@ const std::vector<Key>& schema() {
                 "(follow_movement)",
                 [](auto& c) -> auto& { return c.core.tracking.follow_share; }),
             real_key(
+                "tracking", "follow_radius", 0.0, 1.0,
+                "the largest region radius, as a share of the working width, that "
+                "follow_movement and follow_share take",
+                [](auto& c) -> auto& { return c.core.tracking.follow_radius; }),
+            real_key(
                 "tracking", "extremity_motion", 0.0, 1.0,
                 "a region's far end is the target when this share of the movement is around it",
                 [](auto& c) -> auto& { return c.core.tracking.extremity_motion; }),

@@ -21,6 +21,9 @@ constexpr int foreground_level = 30;    // a pixel this far from the scene shows
 constexpr double moved_share = 0.15;    // ... and moved: this share of the strongest difference
 constexpr double scene_seconds = 0.78;  // the running average's time constant (0.05 at 25 fps)
 constexpr int min_pixels = 3;           // fewer leading pixels: the mean shift's point stands
+// share_near counts differences at this share of the strongest: a camera's noise and JPEG blocks
+// spread faint difference over the whole frame, which would leave any target a small share.
+constexpr double share_floor = 0.15;
 
 int largest_channel_difference(const cv::Vec3b& a, const cv::Vec3b& b) noexcept {
     return std::max({std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2])});
@@ -36,6 +39,7 @@ void MovementChain::reset() noexcept {
     frames_ = 0;
     strongest_ = 0;
     point_.reset();
+    led_at_.reset();
 }
 
 void MovementChain::update(const cv::Mat& color, Timestamp timestamp) noexcept {
@@ -50,12 +54,11 @@ void MovementChain::update(const cv::Mat& color, Timestamp timestamp) noexcept {
         std::swap(previous_, current_);
         color.copyTo(current_);
         difference_.create(color.size(), CV_8U);
-        difference_two_.create(color.size(), CV_8U);
         if (frames_ >= 1) {
             if (frames_ == 1) {
                 previous_.convertTo(scene_, CV_32FC3);
             } else {
-                const double seconds = static_cast<double>(timestamp - previous_time_) / 1e6;
+                const double seconds = static_cast<double>(timestamp - frame_time_) / 1e6;
                 const double weight = 1.0 - std::exp(-std::max(0.0, seconds) / scene_seconds);
                 cv::accumulateWeighted(previous_, scene_, weight);
             }
@@ -64,25 +67,28 @@ void MovementChain::update(const cv::Mat& color, Timestamp timestamp) noexcept {
         reset();
         return;
     }
-    previous_time_ = timestamp;
+    frame_time_ = timestamp;
     frames_ = std::min(frames_ + 1, 3);
     strongest_ = 0;
     total_ = 0.0;
     if (frames_ < 2) return;
-    for (int y = 0; y < current_.rows; ++y) {
-        const auto* now = current_.ptr<cv::Vec3b>(y);
-        const auto* before = previous_.ptr<cv::Vec3b>(y);
-        const auto* two_back = frames_ >= 3 ? before_previous_.ptr<cv::Vec3b>(y) : nullptr;
-        auto* one = difference_.ptr<std::uint8_t>(y);
-        auto* two = difference_two_.ptr<std::uint8_t>(y);
-        for (int x = 0; x < current_.cols; ++x) {
-            const int d = largest_channel_difference(now[x], before[x]);
-            const int d2 = two_back ? largest_channel_difference(now[x], two_back[x]) : d;
-            one[x] = static_cast<std::uint8_t>(d);
-            two[x] = static_cast<std::uint8_t>(std::max(d, d2));
-            strongest_ = std::max(strongest_, d);
-            total_ += d;
-        }
+    try {
+        // OpenCV's vector kernels on whole images, into buffers that keep their size: the
+        // largest channel's absolute difference, its maximum, and its sum over the pixels
+        // share_near counts.
+        cv::absdiff(current_, previous_, channels_);
+        cv::split(channels_, planes_.data());
+        cv::max(planes_[0], planes_[1], difference_);
+        cv::max(difference_, planes_[2], difference_);
+        double strongest = 0.0;
+        cv::minMaxLoc(difference_, nullptr, &strongest);
+        strongest_ = static_cast<int>(strongest);
+        // Whole grey levels: d >= floor is d > ceil(floor) - 1.
+        const double below = std::ceil(share_floor * strongest_) - 1.0;
+        cv::threshold(difference_, counted_, below, 0.0, cv::THRESH_TOZERO);
+        total_ = cv::sum(counted_)[0];
+    } catch (...) {
+        reset();
     }
 }
 
@@ -136,9 +142,13 @@ std::optional<cv::Point2f> MovementChain::locate(cv::Point2f start) const noexce
         const auto* now = current_.ptr<cv::Vec3b>(row);
         const auto* before = previous_.ptr<cv::Vec3b>(row);
         const auto* scene = scene_.ptr<cv::Vec3f>(row);
-        const auto* two = difference_two_.ptr<std::uint8_t>(row);
+        const auto* one = difference_.ptr<std::uint8_t>(row);
+        const auto* two_back = frames_ >= 3 ? before_previous_.ptr<cv::Vec3b>(row) : nullptr;
         for (int col = x0; col < x1; ++col) {
-            if (two[col] < moved) continue;
+            // Moved in the last two frames: against the frame before, or the one before that.
+            if (one[col] < moved && (two_back == nullptr ||
+                                     largest_channel_difference(now[col], two_back[col]) < moved))
+                continue;
             const float here = largest_channel_distance(now[col], scene[col]);
             if (here <= foreground_level ||
                 here <= largest_channel_distance(before[col], scene[col]))
@@ -154,17 +164,15 @@ std::optional<cv::Point2f> MovementChain::locate(cv::Point2f start) const noexce
 
 std::optional<cv::Point2f> MovementChain::follow(std::optional<cv::Point2f> target) noexcept {
     if (frames_ < 2 || strongest_ < difference_floor) return point_;  // nothing moved: it stays
-    std::optional<cv::Point2f> led;
-    if (point_) {
-        // Only from its own point once it has one: a hand that rests while someone passes
-        // behind it is not handed to the passer's movement.
-        led = locate(*point_);
-    } else if (target) {
-        led = locate(*target);
-    } else {
-        led = locate(centre_of_mass());
+    // Only from its own point once it has one: a hand that rests while someone passes behind it
+    // is not handed to the passer's movement. Never from the whole frame's movement before the
+    // tracker had a target: under a flickering light that is everywhere and nowhere.
+    const std::optional<cv::Point2f> from = point_ ? point_ : target;
+    if (!from) return std::nullopt;
+    if (const auto led = locate(*from)) {
+        point_ = led;
+        led_at_ = frame_time_;
     }
-    if (led) point_ = led;
     return point_;
 }
 
@@ -175,21 +183,17 @@ double MovementChain::share_near(cv::Point2f centre, double radius) const noexce
     const int x1 = std::min(difference_.cols - 1, static_cast<int>(std::ceil(centre.x + radius)));
     const int y0 = std::max(0, static_cast<int>(std::floor(centre.y - radius)));
     const int y1 = std::min(difference_.rows - 1, static_cast<int>(std::ceil(centre.y + radius)));
+    const double floor = share_floor * strongest_;
     double sum = 0.0;
     for (int y = y0; y <= y1; ++y) {
         const auto* d = difference_.ptr<std::uint8_t>(y);
         for (int x = x0; x <= x1; ++x) {
             const double dx = static_cast<double>(x) - centre.x;
             const double dy = static_cast<double>(y) - centre.y;
-            if (dx * dx + dy * dy <= r2) sum += d[x];
+            if (dx * dx + dy * dy <= r2 && d[x] >= floor) sum += d[x];
         }
     }
     return sum / total_;
-}
-
-cv::Point2f MovementChain::centre_of_mass() const noexcept {
-    return strong_centre(cv::Rect(0, 0, difference_.cols, difference_.rows))
-        .value_or(cv::Point2f(0.0F, 0.0F));
 }
 
 }  // namespace raypoint::core::detail

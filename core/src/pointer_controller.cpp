@@ -41,10 +41,11 @@ void PointerController::release_down(PointerCommand& command) noexcept {
 }
 
 // ClickSettings::push_region_jump: after the depth signal's update for the frame.
-void PointerController::follow_region(bool has_target, cv::Point2d centroid,
+void PointerController::follow_region(bool has_target, cv::Point2d centroid, cv::Point2d chained,
                                       Timestamp now) noexcept {
     if (!has_target) {
-        region_jumps_ = region_offset_ = last_jump_ = step_jumps_ = step_offset_ = cv::Point2d();
+        region_jumps_ = region_offset_ = last_jump_ = step_jumps_ = step_offset_ = chain_offset_ =
+            cv::Point2d();
         has_last_centroid_ = false;
     } else {
         cv::Point2d jump;
@@ -63,6 +64,7 @@ void PointerController::follow_region(bool has_target, cv::Point2d centroid,
             output_.smoothing == SmoothingKind::ema ? ema_weight_after(output_, seconds) : 0.0;
         region_offset_ = region_offset_ * weight + region_jumps_ * (1.0 - weight);
         step_offset_ = step_offset_ * weight + step_jumps_ * (1.0 - weight);
+        chain_offset_ = chain_offset_ * weight + chained * (1.0 - weight);
         last_centroid_ = centroid;
         last_centroid_at_ = now;
         has_last_centroid_ = true;
@@ -77,7 +79,7 @@ PointerCommand PointerController::release_all() noexcept {
     dweller_.reset();
     mapper_.reset();
     tracking_since_.reset();
-    follow_region(false, cv::Point2d(), 0);
+    follow_region(false, cv::Point2d(), cv::Point2d(), 0);
     undo_ = {};
     before_push_.reset();
     wheel_remainder_ = 0.0;
@@ -102,15 +104,23 @@ PointerCommand PointerController::update(const FrameResult& frame) noexcept {
     PointerCommand command;
     switch (settings_.click.mode) {
         case ClickMode::depth: {
-            // Frame widths on both axes, as the hold radius is.
-            const cv::Point2d where(position.x, position.y / frame_aspect_);
             const double raw = has_target ? std::sqrt(*frame.area) : 0.0;
+            // Frame widths on both axes, as the hold radius is.
             const cv::Point2d& region = frame.followed ? frame.region_centroid : frame.centroid;
             const cv::Point2d centroid(region.x, region.y / frame_aspect_);
+            const cv::Point2d chained =
+                frame.followed ? cv::Point2d(frame.centroid.x - region.x,
+                                             (frame.centroid.y - region.y) / frame_aspect_)
+                               : cv::Point2d();
             const std::optional<double> scale =
                 depth_.update(has_target ? std::optional<double>(raw) : std::nullopt, centroid, now,
                               frame.light_change);
-            follow_region(has_target, centroid, now);
+            follow_region(has_target, centroid, chained, now);
+            // A push is judged where the region is, as the depth signal reads it: the movement's
+            // chain (Tracker, follow_movement) wanders over a growing outline. The cursor goes
+            // where the chain is.
+            const cv::Point2d where(position.x - chain_offset_.x,
+                                    position.y / frame_aspect_ - chain_offset_.y);
             const ClickStep step = clicker_.step(now, scale, ready, where, depth_.given_back(), raw,
                                                  depth_.absorbed(), depth_.jumped());
             // x and y stay where the push began while a button is down or may yet be, and on

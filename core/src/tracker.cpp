@@ -105,19 +105,40 @@ FrameResult Tracker::process(const FrameView& frame) noexcept {
             has_chained = true;
         }
     }
-    if (!step.has_target) return result;
+    if (!step.has_target) {
+        // The region failed and the state machine searches: on a frame whose movement the
+        // chain followed, the target is where that movement led. No area: nothing clicks.
+        if (has_chained && d.chain.led_at() == frame.timestamp) {
+            result.has_target = true;
+            result.centroid = to_fraction(chained);
+            result.followed = true;
+        }
+        return result;
+    }
     result.has_target = true;
     result.centroid = to_fraction(step.estimate.centroid);
     result.inner = to_fraction(step.estimate.inner);
     if (following) {
-        // The region's radius in working pixels, at least 4 (a hand at the far end of a room;
-        // a pick, which has no area yet).
+        // The region's radius in working pixels, at least 4 (a hand at the far end of a room),
+        // at most follow_radius of the frame's width: a region larger than a hand near the
+        // camera may have leaked into the body with the hand at its edge, and its disc would
+        // hold the hand's movement and the chain's point both.
+        const double largest = d.settings.tracking.follow_radius * width;
         const double radius =
-            std::max(4.0, step.area_known ? std::sqrt(step.estimate.area / CV_PI) : 0.0);
+            std::clamp(std::sqrt(step.estimate.area / CV_PI), 4.0, std::max(4.0, largest));
         const cv::Point2f centroid = step.estimate.centroid;
-        if (!has_chained ||
-            d.chain.share_near(centroid, radius + 4.0) >= d.settings.tracking.follow_share ||
-            cv::norm(chained - centroid) <= d.settings.tracking.follow_movement * radius) {
+        const bool led = has_chained && d.chain.led_at() == frame.timestamp;
+        if (!step.area_known) {
+            // A pick, the difference's centre of mass: where the chain followed the movement
+            // this frame, its point is nearer the target than the pick, and stays its own.
+            if (led) {
+                result.region_centroid = result.centroid;
+                result.centroid = to_fraction(chained);
+                result.followed = true;
+            }
+        } else if (!has_chained ||
+                   d.chain.share_near(centroid, radius + 4.0) >= d.settings.tracking.follow_share ||
+                   cv::norm(chained - centroid) <= d.settings.tracking.follow_movement * radius) {
             d.chain.restart(centroid);
         } else {
             result.region_centroid = result.centroid;

@@ -27,6 +27,9 @@ Timestamp at(int frame) {
 Settings settings() {
     Settings s;
     s.tracking.search_threshold = 19200.0;  // see test_tracker.cpp
+    // The centroids compared are the state machine's: the movement's chain, which reports its
+    // own point on a pick, has its test in test_movement_chain.cpp.
+    s.tracking.follow_movement = 0.0;
     return s;
 }
 

@@ -38,12 +38,14 @@ TEST(MovementChain, FollowsAMovingTargetFromFrameToFrame) {
     detail::MovementChain chain;
     cv::Point2f disc(30.0F, 60.0F);
     learn(chain, scene({disc}));
-    EXPECT_FALSE(chain.follow(std::nullopt));  // nothing has moved yet
+    EXPECT_FALSE(chain.follow(disc));  // nothing has moved yet
     for (int i = 3; i < 30; ++i) {
         disc.x += 3.0F;  // 75 working pixels a second
         chain.update(scene({disc}), i * frame_us);
-        const auto point = chain.follow(std::nullopt);
+        // The tracker's centroid starts it; from then on it goes from its own point.
+        const auto point = chain.follow(i == 3 ? std::optional<cv::Point2f>(disc) : std::nullopt);
         ASSERT_TRUE(point) << "frame " << i;
+        EXPECT_EQ(chain.led_at(), i * frame_us);
         // On the disc, at its leading half: where it arrived, not where it left.
         EXPECT_LE(std::abs(point->y - disc.y), 3.0F) << "frame " << i;
         EXPECT_GE(point->x, disc.x - 3.0F) << "frame " << i;
@@ -57,6 +59,21 @@ TEST(MovementChain, FollowsAMovingTargetFromFrameToFrame) {
         const auto point = chain.follow(std::nullopt);
         ASSERT_TRUE(point);
         EXPECT_EQ(*point, *last);
+        EXPECT_EQ(chain.led_at(), 29 * frame_us);  // the last frame it found movement on
+    }
+}
+
+// Movement before the tracker has a target starts nothing: under a flickering light or a
+// camera's noise it is everywhere.
+TEST(MovementChain, StartsOnlyFromTheTrackersTarget) {
+    detail::MovementChain chain;
+    cv::Point2f disc(30.0F, 60.0F);
+    learn(chain, scene({disc}));
+    for (int i = 3; i < 10; ++i) {
+        disc.x += 3.0F;
+        chain.update(scene({disc}), i * frame_us);
+        EXPECT_FALSE(chain.follow(std::nullopt)) << "frame " << i;
+        EXPECT_FALSE(chain.led_at());
     }
 }
 
@@ -87,13 +104,32 @@ TEST(MovementChain, TheShareNearAPointIsTheMovementAroundIt) {
     EXPECT_LT(chain.share_near(still, 13.0), 0.01);
 }
 
+// A camera's noise, faint and everywhere, is not movement a target must hold a share of.
+TEST(MovementChain, TheShareLeavesOutFaintNoise) {
+    detail::MovementChain chain;
+    cv::Point2f mover(110.0F, 60.0F);
+    cv::RNG rng(7);
+    const auto noisy = [&](cv::Point2f at) {
+        cv::Mat frame = scene({at});
+        cv::Mat noise(frame.size(), CV_8UC3);
+        rng.fill(noise, cv::RNG::UNIFORM, 0, 12);  // up to 11 grey levels, as a cheap sensor
+        return cv::Mat(frame + noise);
+    };
+    learn(chain, noisy(mover));
+    mover.x += 3.0F;
+    chain.update(noisy(mover), 3 * frame_us);
+    // The disc's outline moved by 160 grey levels and more over some 60 pixels; the noise of
+    // 11 levels at most over 19,200 pixels sums to more than that, and does not count.
+    EXPECT_GT(chain.share_near(mover, 13.0), 0.9);
+}
+
 TEST(MovementChain, StartsOverWhenTheFrameSizeChanges) {
     detail::MovementChain chain;
     cv::Point2f disc(30.0F, 60.0F);
     for (int i = 0; i < 6; ++i) {
         disc.x += 3.0F;
         chain.update(scene({disc}), i * frame_us);
-        chain.follow(std::nullopt);
+        chain.follow(disc);
     }
     ASSERT_TRUE(chain.follow(std::nullopt));
     cv::Mat larger;
@@ -104,16 +140,19 @@ TEST(MovementChain, StartsOverWhenTheFrameSizeChanges) {
 
 // The Tracker with follow_movement on against the same Tracker with it off, on a noisy disk that
 // rests, moves 12 px a frame and vanishes: the chain never changes what the state machine does,
-// a target that holds the movement keeps its own centroid, and a followed frame keeps its
-// region's centroid beside the chain's point.
+// a target that holds the movement keeps its own centroid, the pick is the chain's point, a
+// followed frame keeps its region's centroid beside the chain's point, and a searching frame has
+// the chain's point only while something moves.
 TEST(MovementChain, TheTrackerReportsTheChainOnlyWhereTheRegionLostTheMovement) {
     Settings off;
     off.tracking.search_threshold = 19200.0;  // see test_tracker.cpp
+    off.tracking.follow_movement = 0.0;
     Settings on = off;
     on.tracking.follow_movement = 1.0;
     Tracker plain(off);
     Tracker following(on);
     int tracked = 0;
+    int searched_with_target = 0;
     for (int i = 0; i < 140; ++i) {
         SCOPED_TRACE(::testing::Message() << "frame " << i);
         const cv::Mat image = i >= 96
@@ -123,17 +162,33 @@ TEST(MovementChain, TheTrackerReportsTheChainOnlyWhereTheRegionLostTheMovement) 
         const FrameResult want = plain.process(view);
         const FrameResult got = following.process(view);
         ASSERT_EQ(got.state, want.state);
-        ASSERT_EQ(got.has_target, want.has_target);
         ASSERT_EQ(got.area, want.area);
         EXPECT_FALSE(want.followed);
-        if (!want.has_target) continue;
-        if (i < 96) {
+        if (!want.has_target) {
+            // Searching: a target only where the chain followed movement this frame, without
+            // an area; once the disk has gone, nothing moves and nothing is reported.
+            if (got.has_target) {
+                EXPECT_TRUE(got.followed);
+                ++searched_with_target;
+            }
+            if (i >= 98) {
+                EXPECT_FALSE(got.has_target);
+            }
+            continue;
+        }
+        ASSERT_TRUE(got.has_target);
+        if (!want.area) {
+            // A pick: where the disk moves, the chain started there has the leading half of its
+            // movement; after it has gone, nothing moves near the chain and the pick stands.
+            EXPECT_EQ(got.followed, i < 96);
+        } else if (i < 96) {
             ++tracked;
             EXPECT_FALSE(got.followed);  // the disk holds the movement around it
         }
         ASSERT_EQ(got.followed ? got.region_centroid : got.centroid, want.centroid);
     }
     EXPECT_GE(tracked, 20);
+    EXPECT_LE(searched_with_target, 2);
 }
 
 }  // namespace

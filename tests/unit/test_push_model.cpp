@@ -279,5 +279,38 @@ TEST(PushModel, AQuickPushAtTenFpsPressesOnItsFirstFrameBack) {
     // clang-format on
 }
 
+// With the movement's chain (Tracker, follow_movement), the reported centroid and the position
+// are the chain's point, which wanders over a push's growing outline; the region's centroid
+// stays where the push began. push_travel 0.1 (0.02 frame widths at size 0.2), unsmoothed: the
+// chain 0.04 frame widths aside is no travel, as the region did not move; the same positions
+// from the region itself are an approach carried sideways.
+TEST(PushModel, TheChainsWanderIsNoTravel) {
+    PointerSettings settings = depth();
+    settings.click.push_travel = 0.1;
+    struct Row {
+        double ms, chain_x, size;
+    };
+    const std::vector<Row> rows = {{0, 0.0, 0.0},      {200, 0.5, 0.2},   {300, 0.5, 0.2},
+                                   {400, 0.51, 0.215}, {500, 0.53, 0.23}, {600, 0.54, 0.245}};
+    for (const bool followed : {true, false}) {
+        SCOPED_TRACE(followed ? "followed" : "the region's own centroid");
+        PointerController pointer(settings, aspect, unsmoothed);
+        for (std::size_t i = 0; i < rows.size(); ++i) {
+            const Row& row = rows[i];
+            FrameResult frame = test::frame_of(
+                {row.ms, T, row.chain_x, 0.5, i == 0 ? picked : row.size, nullptr, ""},
+                static_cast<std::int64_t>(i));
+            if (followed && frame.area) {
+                frame.followed = true;
+                frame.region_centroid = {0.5, 0.5};
+            }
+            pointer.update(frame);
+        }
+        EXPECT_EQ(to_string(pointer.click_machine().state()),
+                  std::string_view(followed ? "pressed" : "drifting"));
+        EXPECT_EQ(pointer.is_down(Button::left), followed);
+    }
+}
+
 }  // namespace
 }  // namespace raypoint::core

@@ -44,7 +44,10 @@ class PointerController {
     void release_down(PointerCommand& command) noexcept;
     void depth_click(const ClickStep& step, const Motion& motion, PointerCommand& command) noexcept;
     void scroll(double up, PointerCommand& command) noexcept;  // up: frame widths
-    void follow_region(bool has_target, cv::Point2d centroid, Timestamp now) noexcept;
+    // `chained`: the reported centroid less the region's on a frame the movement's chain led
+    // (FrameResult::followed), frame widths.
+    void follow_region(bool has_target, cv::Point2d centroid, cv::Point2d chained,
+                       Timestamp now) noexcept;
 
     PointerSettings settings_;
     double frame_aspect_;
@@ -63,6 +66,9 @@ class PointerController {
     // a push's possible growth): HOLDING's position leaves them out.
     cv::Point2d step_jumps_;
     cv::Point2d step_offset_;
+    // The chain's point less the region's centroid, smoothed alike: the position less it is
+    // the region's, which the click machine judges a push by.
+    cv::Point2d chain_offset_;
     cv::Point2d last_centroid_;
     cv::Point2d last_jump_;
     Timestamp last_centroid_at_ = 0;

@@ -186,20 +186,25 @@ struct TrackingSettings {
     // as in the paper.
     int repick_difference = 10;
     double repick_seconds = 0.5;
-    // The movement's chain (docs/accuracy.md): a point that follows where the movement leads
-    // from frame to frame. A tracked centroid farther than follow_movement region radii
-    // (sqrt(area / pi), at least 4 working pixels) from the chain's point, while the disc of
-    // that radius plus 4 px around it holds under follow_share of the frame's difference, is a
-    // region that lost its target (a small hand's region leaks into the body or the window
-    // beside it): the centroid reported is the chain's point, the area the region's. At 1 and
-    // 0.2 the real hand goes from 36.5% tracked at 9.26 px to 58.4% at 3.92 px, and no rendered
-    // clip falls under 98% / 1.5 px; but the cursor then follows the chain's point through a
-    // push too, and the click gesture set's pushes pressed fall from 97.8% to 91.2%, so it is
-    // off by default: a setting for a camera whose picture the edges fail on, when the cursor
-    // matters more than the click (docs/settings.md). A share of 0.25 lost a rendered hand
-    // under mains banding; 0.15 was 4.05 px. 0 = off, as in the paper.
-    double follow_movement = 0.0;
+    // The movement's chain (docs/settings.md): a point that follows where the movement leads
+    // from frame to frame, started at the tracker's first target. A tracked centroid farther
+    // than follow_movement region radii (sqrt(area / pi), 4 working pixels to follow_radius of
+    // the width) from the chain's point, while the disc of that radius plus 4 px around it
+    // holds under follow_share of the frame's strong difference, is a region that lost its
+    // target (a small hand's region leaks into the body or the window beside it): the centroid
+    // reported and the cursor go to the chain's point, the area and the click stay the
+    // region's. A pick, and a frame the state machine searches on, take the chain's point where
+    // it followed movement on that frame. At 1 / 0.2 / 0.15 the real hand goes from 36.5%
+    // tracked at 9.26 px to 82.2% at 3.89 px, the rendered clips at 98% / 1.5 px from 53 of 58
+    // to 54, and the click gesture set's pushes stay as they were. A share of 0.3 lost a
+    // rendered hand to a person passing behind it; a largest radius of 0.125 (20 px) took the
+    // fast scene to 1.64 px, 0.2 (32 px) left the real hand at 79.0%. 0 = off, as in the paper.
+    double follow_movement = 1.0;
     double follow_share = 0.2;
+    // The largest region radius the follow_movement tests take, as a share of the working width
+    // (24 px at 160): a region larger than a hand near the camera may be the body the hand
+    // leaked into, with the hand's movement and the chain's point at its edge, inside its disc.
+    double follow_radius = 0.15;
     // The far end of a region crossing the border (EstimatorSettings::extremity) becomes the
     // estimate when at least this share of the movement is around it (0.3 lost hd60's hand).
     double extremity_motion = 0.1;
