@@ -107,10 +107,12 @@ FrameResult Tracker::process(const FrameView& frame) noexcept {
     }
     if (!step.has_target) {
         // The region failed and the state machine searches: on a frame whose movement the
-        // chain followed, the target is where that movement led. No area: nothing clicks.
+        // chain followed, the target is where that movement led, the chain's point its centroid
+        // and its inner point. No area: nothing clicks.
         if (has_chained && d.chain.led_at() == frame.timestamp) {
             result.has_target = true;
             result.centroid = to_fraction(chained);
+            result.inner = result.centroid;
             result.followed = true;
         }
         return result;

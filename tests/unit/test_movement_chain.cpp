@@ -169,6 +169,7 @@ TEST(MovementChain, TheTrackerReportsTheChainOnlyWhereTheRegionLostTheMovement) 
             // an area; once the disk has gone, nothing moves and nothing is reported.
             if (got.has_target) {
                 EXPECT_TRUE(got.followed);
+                EXPECT_EQ(got.inner, got.centroid);  // the chain's point, not the origin
                 ++searched_with_target;
             }
             if (i >= 98) {
