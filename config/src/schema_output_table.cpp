@@ -225,7 +225,8 @@ std::vector<Key> output_keys() {
         real_key(
             "click", "hold_flicker_seconds", 0.0, 1.0,
             "a held push's size is its largest over this many seconds, so the region losing a "
-            "piece for a frame or two leaves it still (0 = off)",
+            "piece for a frame or two leaves it still; back at a size it jumped from, still "
+            "since it was there once it stays twice this long (0 = off)",
             [](auto& c) -> auto& { return c.core.pointer.click.hold_flicker_seconds; }),
         // [dwell] click.mode = dwell
         real_key(

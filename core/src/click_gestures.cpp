@@ -2,6 +2,7 @@
 // The click machine's gestures after a press: a push held still (HOLDING, RIGHT_ARMED) becomes a
 // right click, a push held while moving becomes a drag or a scroll (click_machine.hpp;
 // docs/pointer.md, "Right click, double click and scroll").
+#include <algorithm>
 #include <cmath>
 
 #include "raypoint/core/click_machine.hpp"
@@ -15,6 +16,21 @@ void ClickMachine::on_holding() noexcept {
         return;
     }
     if (moved_while_held()) return;
+    follow_stillness();
+    if (settings_.right_seconds > 0.0) {
+        // Back at a size it jumped away from, the target stays there a while first: a push
+        // coming back passes the sizes it went through on its way in in a frame or two.
+        if (seconds_since(still_since_) >= settings_.right_seconds &&
+            seconds_since(level_since_) >= 2.0 * settings_.hold_flicker_seconds)
+            state_ = ClickState::right_armed;
+    } else if (seconds_since(pressed_at_) >= settings_.drag_seconds) {
+        // Scroll alone: holding still drags, as without it.
+        state_ = ClickState::dragging;
+        press_left();
+    }
+}
+
+void ClickMachine::follow_stillness() noexcept {
     // Still in size too: a slow push still growing, or one that already comes back, is not a
     // held push. The size is the peak of the last hold_flicker_seconds: a region that drops a
     // piece for a frame is as still as its hand.
@@ -22,18 +38,30 @@ void ClickMachine::on_holding() noexcept {
         peak_held_ = scale_;
         peak_held_at_ = now_;
     }
-    if (std::abs(peak_held_ / still_scale_ - 1.0) > settings_.hold_rise) {
-        still_scale_ = peak_held_;
+    // A jump: more than hold_rise from the frame before, per 1/30 s between them (a quick push
+    // at 10 fps grows 10-25% a frame).
+    const double frames = std::max(1.0, seconds_since(last_frame_) * 30.0);
+    if (last_scale_ > 0.0 && std::abs(scale_ / last_scale_ - 1.0) > settings_.hold_rise * frames)
+        jumped_at_ = now_;
+    if (std::abs(peak_held_ / still_scale_ - 1.0) <= settings_.hold_rise) return;
+    // A region that takes in a piece for a few frames and drops it again (or drops one and
+    // takes it back) changes shape, not depth: back at the size it jumped away from, the target
+    // has been still since it was still there. A push comes closer and goes back gradually, so
+    // a size it moved away from without a jump is not one to come back to.
+    const bool back =
+        other_scale_ > 0.0 && std::abs(peak_held_ / other_scale_ - 1.0) <= settings_.hold_rise;
+    const bool jumped = seconds_since(jumped_at_) <= settings_.hold_flicker_seconds;
+    const Timestamp left_since = still_since_;
+    if (back) {
+        still_since_ = std::min(left_since, other_since_);
+        other_since_ = still_since_;
+    } else {
+        other_since_ = left_since;
         still_since_ = now_;
     }
-    if (settings_.right_seconds > 0.0) {
-        if (seconds_since(still_since_) >= settings_.right_seconds)
-            state_ = ClickState::right_armed;
-    } else if (seconds_since(pressed_at_) >= settings_.drag_seconds) {
-        // Scroll alone: holding still drags, as without it.
-        state_ = ClickState::dragging;
-        press_left();
-    }
+    other_scale_ = jumped || back ? still_scale_ : 0.0;
+    still_scale_ = peak_held_;
+    level_since_ = now_;
 }
 
 bool ClickMachine::moved_while_held() noexcept {
@@ -47,6 +75,11 @@ bool ClickMachine::moved_while_held() noexcept {
     // held push does not grow by glitch_step in a frame, so the region did.
     const cv::Point2d moved = where_ - held_at_ - (step_offset_ - held_step_offset_);
     if (cv::norm(moved) <= settings_.hold_radius) return false;
+    // Once the size is half of release_drop under the held size, the push is on its way back
+    // (pulled_back() takes it at once from there where the target's own size is home): a
+    // region that changes shape as the hand comes back moves the centroid, not the hand.
+    if (settings_.release_drop > 0.0 && scale_ < peak_held_ * (1.0 - settings_.release_drop / 2.0))
+        return false;
     if (settings_.scroll_gain > 0.0 && std::abs(moved.y) > std::abs(moved.x)) {
         state_ = ClickState::scrolling;
         result_.scroll = -moved.y;  // y grows downward; up scrolls up

@@ -184,6 +184,10 @@ void ClickMachine::confirm() noexcept {
         held_step_offset_ = step_offset_;
         still_scale_ = scale_;
         still_since_ = now_;
+        other_scale_ = 0.0;
+        other_since_ = now_;
+        jumped_at_ = 0;
+        level_since_ = now_;
         peak_held_ = scale_;
         peak_held_at_ = now_;
     } else {

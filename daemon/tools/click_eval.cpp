@@ -151,7 +151,8 @@ void print_trace_header(std::FILE* out, std::string_view clip) {
     std::fprintf(out,
                  "# trace %.*s: time (s), sqrt(area) (- without one), centroid x y (fractions of "
                  "the frame), the click machine's baseline and rise, the depth signal's step "
-                 "(absorbed, given back, -), the click state, the buttons and wheel out\n",
+                 "(absorbed, given back, -), the click machine's position x y (frame widths), "
+                 "the click state, the buttons and wheel out\n",
                  static_cast<int>(clip.size()), clip.data());
 }
 
@@ -170,8 +171,9 @@ void trace_frame(std::FILE* out, const core::FrameResult& result,
     const core::ClickMachine& machine = pointer.click_machine();
     const char* step = signal.absorbed() ? "absorbed" : signal.given_back() ? "given_back" : "-";
     const std::string_view state = core::to_string(machine.state());
-    std::fprintf(out, " %.4f %+.3f %s %.*s", machine.baseline(), machine.rise(), step,
-                 static_cast<int>(state.size()), state.data());
+    const cv::Point2d where = machine.where();
+    std::fprintf(out, " %.4f %+.3f %s %.3f %.3f %.*s", machine.baseline(), machine.rise(), step,
+                 where.x, where.y, static_cast<int>(state.size()), state.data());
     for (const core::ButtonChange& change : command.button_changes()) {
         const std::string_view button = core::to_string(change.button);
         std::fprintf(out, " %c%.*s", change.pressed ? '+' : '-', static_cast<int>(button.size()),

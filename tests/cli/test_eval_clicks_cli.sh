@@ -22,7 +22,7 @@ frames=$(wc -l < "$work/frames.txt")
 [ "$frames" -ge 240 ] || fail "$frames frame lines, expected one a frame"
 number='[0-9]+\.[0-9]+'
 state='(inactive|idle|rising|drifting|pressed|dragging|refractory|holding|right_armed|scrolling)'
-pattern="^$number (- - -|$number $number $number) $number [-+]$number (absorbed|given_back|-) $state( [-+](left|right|middle))*( wheel -?[0-9]+)?$"
+pattern="^$number (- - -|$number $number $number) $number [-+]$number (absorbed|given_back|-) -?$number -?$number $state( [-+](left|right|middle))*( wheel -?[0-9]+)?$"
 bad=$(grep -Evc "$pattern" "$work/frames.txt")
 [ "$bad" -eq 0 ] || fail "$bad lines do not match the columns, e.g. $(grep -Ev "$pattern" "$work/frames.txt" | head -1)"
 awk 'NR > 1 && $1 <= last { bad = 1 } { last = $1 } END { exit bad }' "$work/frames.txt" ||

@@ -89,6 +89,8 @@ class ClickMachine {
     ClickState state() const noexcept { return state_; }
     double baseline() const noexcept { return baseline_; }  // sqrt(area), 0 before a target
     double rise() const noexcept { return rise_; }          // of the last frame with a target
+    // The position a hold's move is judged by (frame widths), of the last frame stepped.
+    cv::Point2d where() const noexcept { return last_where_; }
 
   private:
     void on_inactive() noexcept;
@@ -107,6 +109,8 @@ class ClickMachine {
     // HOLDING, RIGHT_ARMED: past hold_radius from where the hold began, the drag or the scroll
     // starts (true).
     bool moved_while_held() noexcept;
+    // HOLDING: since when the size has been still (still_since_), through a region's flicker.
+    void follow_stillness() noexcept;
 
     void follow_baseline() noexcept;
     double seconds_since(Timestamp then) const noexcept;
@@ -175,6 +179,14 @@ class ClickMachine {
     bool held_jump_ = false;  // the hold began on the frame the rise jumped from the baseline
     double still_scale_ = 0.0;
     Timestamp still_since_ = 0;
+    // HOLDING: the still size before still_scale_ when the size jumped away from it (0 when it
+    // moved away gradually, as a push does), and since when the target has been still at one of
+    // the two; when the size came to still_scale_; the last frame on which it jumped by more
+    // than hold_rise.
+    double other_scale_ = 0.0;
+    Timestamp other_since_ = 0;
+    Timestamp level_since_ = 0;
+    Timestamp jumped_at_ = 0;
     // HOLDING: the largest size within hold_flicker_seconds, as a peak held until that long
     // after it was seen or a larger one comes (a flicker's large shape comes back within a
     // frame or two), and when it was seen.
