@@ -170,6 +170,12 @@ std::vector<Key> output_keys() {
             "took out, up to this many times the target's size of them (0 = never)",
             [](auto& c) -> auto& { return c.core.pointer.click.push_region_jump; }),
         real_key(
+            "click", "travel_hold_seconds", 0.0, 1.0,
+            "seconds of frame time a rise whose travel passed half of push_travel must stay at "
+            "press_rise to press, when longer than press_hold_seconds: a hand opening from a "
+            "fist carries its centroid, a push does not (0 = off)",
+            [](auto& c) -> auto& { return c.core.pointer.click.travel_hold_seconds; }),
+        real_key(
             "click", "push_dip", 0.0, 1.0,
             "while a push rises, sqrt(area) may fall this far (relative) under its largest "
             "since the push began; farther it is a wobble, not a push (0 = off)",

@@ -164,9 +164,10 @@ bool ClickMachine::held(bool condition, Timestamp since) noexcept {
         // Only the press's hold (RISING): the rise came from under start_rise on this frame.
         held_jump_ = state_ == ClickState::rising && now_ <= rising_at_;
     }
-    const double hold = held_jump_
-                            ? std::max(settings_.press_hold_seconds, settings_.jump_hold_seconds)
-                            : settings_.press_hold_seconds;
+    double hold = held_jump_ ? std::max(settings_.press_hold_seconds, settings_.jump_hold_seconds)
+                             : settings_.press_hold_seconds;
+    if (state_ == ClickState::rising && travelled_)
+        hold = std::max(hold, settings_.travel_hold_seconds);
     return seconds_since(*held_since_) >= hold;
 }
 
@@ -233,6 +234,7 @@ void ClickMachine::on_idle() noexcept {
         push_region_offset_ = last_region_offset_;
         push_raw_ = last_raw_;
         push_peak_ = 0.0;
+        travelled_ = false;
         held_since_.reset();
         state_ = ClickState::rising;
         on_rising();  // a low frame rate may bring the whole push in one frame
@@ -270,6 +272,9 @@ void ClickMachine::on_rising() noexcept {
     // is still there on its next frame. No press comes on a jumped frame either (below).
     const bool carried =
         settings_.push_travel > 0.0 && !jumped_ && cv::norm(travel) > settings_.push_travel * size;
+    // Half way there, the press waits travel_hold_seconds for the rest to show.
+    travelled_ = travelled_ || (settings_.push_travel > 0.0 &&
+                                cv::norm(travel) > 0.5 * settings_.push_travel * size);
     // A push grows frame after frame; the bob of a step or a wobble goes up and down.
     push_peak_ = std::max(push_peak_, scale_);
     const bool dipped =

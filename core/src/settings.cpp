@@ -45,6 +45,7 @@ Settings paper_settings() {
     click.glitch_light = 0.0;
     click.glitch_return_seconds = 0.0;
     click.push_travel = 0.0;
+    click.travel_hold_seconds = 0.0;
     click.push_region_jump = 0.0;
     click.push_dip = 0.0;
     click.refractory_seconds = 0.3;

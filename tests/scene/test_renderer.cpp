@@ -202,6 +202,42 @@ TEST(SceneRenderer, HandIsNonConvex) {
     EXPECT_GT(solidity, 0.4);
 }
 
+// Solidity (area over the convex hull's) and truth of a still hand with its fingers at `spread`.
+std::pair<double, Truth> hand_with(double spread) {
+    SceneSpec s = still(Target::hand, 0.4);
+    s.path[0].spread = spread;
+    const RenderedFrame f = Renderer(s).render(0);
+    std::vector<cv::Point> pixels;
+    cv::findNonZero(f.mask, pixels);
+    std::vector<cv::Point> hull;
+    cv::convexHull(pixels, hull);
+    return {f.truth.area * static_cast<double>(f.mask.total()) / cv::contourArea(hull), f.truth};
+}
+
+TEST(SceneRenderer, AHandsFingersCloseSideBySideAndCurlIntoAFist) {
+    const auto [fanned_solidity, fanned] = hand_with(1.0);
+    const auto [together_solidity, together] = hand_with(0.0);
+    const auto [fist_solidity, fist] = hand_with(-1.0);
+    // Side by side the fingers overlap: a little less area, a much fuller outline.
+    EXPECT_LT(together.area, 0.95 * fanned.area);
+    EXPECT_GT(together.area, 0.8 * fanned.area);
+    EXPECT_GT(together_solidity, fanned_solidity + 0.1);
+    // A fist: the knuckles and the palm, about half the open hand, nearly convex, lower.
+    EXPECT_LT(fist.area, 0.65 * fanned.area);
+    EXPECT_GT(fist.area, 0.4 * fanned.area);
+    EXPECT_GT(fist_solidity, 0.9);
+    EXPECT_GT(fist.cy, fanned.cy + 0.02);
+    // The same hand: the wrist stays where it was.
+    EXPECT_NEAR(fist.by + fist.bh, fanned.by + fanned.bh, 2.0 / 480);
+    // The default spread is the fanned hand, pixel for pixel.
+    const RenderedFrame plain = Renderer(still(Target::hand, 0.4)).render(0);
+    SceneSpec one = still(Target::hand, 0.4);
+    one.path.push_back({0.5, 0.5, 0.5, 0.4, 0.0, 1.0});
+    one.path.push_back({1.0, 0.5, 0.5, 0.4, 0.0, 0.0});
+    const RenderedFrame at_one = Renderer(one).render(0);
+    EXPECT_EQ(cv::norm(plain.bgr, at_one.bgr, cv::NORM_INF), 0.0);
+}
+
 // What an edge tracker at 160x120 sees: the strongest per-channel Sobel response.
 cv::Mat edges_160x120(const cv::Mat& bgr, double threshold) {
     cv::Mat small;

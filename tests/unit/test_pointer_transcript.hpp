@@ -69,6 +69,7 @@ inline core::PointerSettings depth_pointer() {
     s.click.glitch_leap = 0.0;
     s.click.glitch_light = 0.0;
     s.click.push_travel = 0.0;
+    s.click.travel_hold_seconds = 0.0;
     s.click.push_dip = 0.0;
     s.click.settle_seconds = 0.0;
     s.safety.min_tracking_seconds = 0.2;

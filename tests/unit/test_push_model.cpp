@@ -312,5 +312,51 @@ TEST(PushModel, TheChainsWanderIsNoTravel) {
     }
 }
 
+TEST(PushModel, ARiseHalfWayToItsTravelWaitsForTheRest) {
+    // push_travel 0.1 (0.02 frame widths here), travel_hold_seconds 0.15. A hand opening from a
+    // fist: its size rises 25% in 0.1 s while the position, smoothed, follows the fingers' side
+    // late. Past half of push_travel at 500 ms it is not pressed yet; at 700 ms the travel is
+    // past push_travel: an approach while moving. Without the hold it presses at 500 ms.
+    PointerSettings settings = depth();
+    settings.click.push_travel = 0.1;
+    settings.click.travel_hold_seconds = 0.15;
+    // clang-format off
+    const std::vector<test::PointerRow> opening = {
+        {   0,   T,       0.0,   0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,   0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,   0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.505, 0.5,  0.220,  "rising",     "rel -5 0"},
+        { 500,   T,       0.512, 0.5,  0.250,  "rising",     "rel -7 0"},   // 0.012 > 0.01
+        { 600,   T,       0.518, 0.5,  0.255,  "rising",     "rel -6 0"},   // held 0.1 s
+        { 700,   T,       0.525, 0.5,  0.255,  "drifting",   "rel -7 0"},   // 0.025 > 0.02
+    };
+    // clang-format on
+    PointerController pointer(settings, aspect);
+    play(pointer, opening);
+    settings.click.travel_hold_seconds = 0.0;
+    PointerController at_once(settings, aspect);
+    std::vector<test::PointerRow> pressed(opening.begin(), opening.begin() + 5);
+    pressed[4].click = "pressed";
+    pressed[4].out = "rel 5 0 +left";
+    play(at_once, pressed);
+}
+
+TEST(PushModel, APushInPlaceIsNotHeldForItsTravel) {
+    // The same rise with the position within half of push_travel: pressed at once.
+    PointerSettings settings = depth();
+    settings.click.push_travel = 0.1;
+    settings.click.travel_hold_seconds = 0.15;
+    PointerController pointer(settings, aspect);
+    // clang-format off
+    play(pointer, {
+        {   0,   T,       0.0,   0.0,  picked, "inactive",   ""},
+        { 200,   T,       0.5,   0.5,  0.200,  "idle",       ""},
+        { 300,   T,       0.5,   0.5,  0.200,  "idle",       ""},
+        { 400,   T,       0.505, 0.5,  0.220,  "rising",     "rel -5 0"},
+        { 500,   T,       0.508, 0.5,  0.250,  "pressed",    "rel 5 0 +left"},  // 0.008
+    });
+    // clang-format on
+}
+
 }  // namespace
 }  // namespace raypoint::core

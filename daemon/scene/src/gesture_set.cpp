@@ -143,7 +143,8 @@ double cycle(double t, double from, double period, int& index) {
 
 GestureClip motion_clip(std::uint32_t seed, int index, const std::string& motion, double seconds) {
     Rng rng(mix_seed(seed, 5000 + static_cast<std::uint64_t>(index)));
-    const bool hand = motion == "turn" || rng.chance(0.6);
+    const bool hand =
+        motion == "turn" || motion == "fingers" || motion == "fist" || rng.chance(0.6);
     GestureClip clip = conditioned(rng, motion + "-" + std::to_string(index), hand);
     clip.motion = motion;
     SceneSpec& s = clip.spec;
@@ -258,6 +259,23 @@ GestureClip motion_clip(std::uint32_t seed, int index, const std::string& motion
             k.depth = d0 * (1 + 0.03 * std::sin(2 * pi * t / 4.5));
             return k;
         };
+    } else if (motion == "fingers" || motion == "fist") {
+        // Ordinary slow moves while the fingers close side by side (or curl into a fist) in
+        // 0.2-0.5 s, stay so 0.3-1.0 s, open again as fast, and stay open 1-2 s.
+        const double close = rng.uniform(0.2, 0.5);
+        const double closed = rng.uniform(0.3, 1.0);
+        const double open = rng.uniform(1.0, 2.0);
+        const double shut = motion == "fist" ? -1.0 : 0.0;
+        pose = [&, base = pose, close, closed, open, shut](double t) {
+            Keyframe k = base(t);
+            k.x += 0.05 * std::sin(2 * pi * t / 3.5 + phase);
+            k.depth = d0 * (1 + 0.03 * std::sin(2 * pi * t / 4.5));
+            int n = 0;
+            const double u = cycle(t, from, 2 * close + closed + open * rate, n);
+            const double in = smoothstep(u / close) - smoothstep((u - close - closed) / close);
+            k.spread = 1 + (shut - 1) * in;
+            return k;
+        };
     }
     if (motion == "wander") {
         // The renderer's own path: wanders in x, y and depth (3.5% to 10% of the frame).
@@ -303,11 +321,13 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
     int motion_rounds = 0;
     int button_clips = 0;  // of each kind
     int pass_clips = 0;    // a second object passing behind the target
+    int finger_clips = 0;  // of each: the fingers closing side by side, or into a fist
     if (name == "full") {
         push_clips = 110;
         motion_rounds = 4;  // 7 motions x 4 + 2 more = 30 clips
         button_clips = 20;
         pass_clips = 4;
+        finger_clips = 4;
     } else if (name == "ci") {
         push_clips = 6;
         motion_rounds = 0;
@@ -322,7 +342,8 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
     clips.reserve(static_cast<std::size_t>(push_clips) +
                   static_cast<std::size_t>(motion_rounds) * motions.size() + 3 +
                   3 * static_cast<std::size_t>(button_clips) +
-                  static_cast<std::size_t>(pass_clips));
+                  static_cast<std::size_t>(pass_clips) +
+                  2 * static_cast<std::size_t>(finger_clips));
     for (int i = 0; i < push_clips; ++i)
         clips.push_back(push_clip(seed, i));
     int index = 0;
@@ -343,6 +364,11 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
          {GestureKind::right, GestureKind::double_click, GestureKind::scroll_up}) {
         for (int i = 0; i < button_clips; ++i)
             clips.push_back(gesture::button_clip(seed, i, kind));
+    }
+    // After the others, so that adding them changed none of the clips above.
+    for (const char* motion : {"fingers", "fist"}) {
+        for (int i = 0; i < finger_clips; ++i)
+            clips.push_back(motion_clip(seed, index++, motion, 26));
     }
     return clips;
 }

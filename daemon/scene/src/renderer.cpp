@@ -28,6 +28,9 @@ namespace raypoint::scene {
 struct Renderer::Assets {
     Camera camera;
     std::shared_ptr<const Sprite> sprite;
+    // A hand whose fingers move: its sprite at each of 2 spread_levels + 1 spreads from -1 to 1
+    // (empty when every keyframe has them fanned).
+    std::vector<std::shared_ptr<const Sprite>> spreads;
     Trajectory trajectory;
     cv::Mat vignette;    // CV_32F
     cv::Mat background;  // CV_32FC3, vignetted, at full light
@@ -67,6 +70,22 @@ struct Renderer::Assets {
                 mix_seed(spec.seed, 11));
         }
         if (!spec.passes.empty()) passer.emplace(size, spec);
+        const bool moving_fingers = spec.target == Target::hand &&
+                                    std::any_of(spec.path.begin(), spec.path.end(),
+                                                [](const Keyframe& k) { return k.spread != 1.0; });
+        if (moving_fingers) {
+            const Colour colour =
+                spec.target_colour.value_or(default_colour(spec.target, spec.background));
+            for (int level = -spread_levels; level <= spread_levels; ++level)
+                spreads.push_back(
+                    shared_sprite(spec.target, colour, static_cast<double>(level) / spread_levels));
+        }
+    }
+
+    const Sprite& sprite_at(const Pose& pose) const {
+        if (spreads.empty()) return *sprite;
+        const long level = std::lround((std::clamp(pose.spread, -1.0, 1.0) + 1.0) * spread_levels);
+        return *spreads[static_cast<std::size_t>(level)];
     }
 };
 
@@ -126,7 +145,7 @@ double travel_px(const Placement& a, const Placement& b) {
 std::optional<Placement> place(const Renderer::Assets& a, const SceneSpec& spec, double when) {
     const std::optional<Pose> pose = a.trajectory.at(when);
     if (!pose) return std::nullopt;
-    return Placement(*a.sprite, a.camera, spec.target_size_m, *pose);
+    return Placement(a.sprite_at(*pose), a.camera, spec.target_size_m, *pose);
 }
 
 // Motion blur: sub-frames spread evenly over the exposure, which is centred on t, enough of

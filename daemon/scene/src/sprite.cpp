@@ -50,30 +50,48 @@ struct Ellipse {
 };
 
 // A flat right hand, palm to the camera, fingers fanned over 70 degrees and the thumb out to
-// the side; drawn in raw units (palm 0.44 wide), normalised to height 1 afterwards.
+// the side (spread 1), fingers side by side and the thumb along the index (spread 0), curled
+// into a fist (spread -1: fingers shortened to their knuckles, the thumb folded across the
+// palm), and anything between; drawn in raw units (palm 0.44 wide), normalised to the fanned
+// hand's height afterwards.
 struct HandShape {
     Ellipse palm{{0, 0.10}, 0.22, 0.25};
     Capsule wrist{{0, 0.25}, {0, 0.36}, 0.13};
     std::array<Capsule, 5> fingers{};
 
-    HandShape() {
+    explicit HandShape(double spread = 1.0) {
         struct Finger {
-            double x, y, angle, length, radius;
+            double x, y, fanned, together, length, radius;
         };
-        // Base inside the palm, direction from straight up (clockwise positive), length to the
-        // tip's centre. Widths ~ 1/6 of the hand's height, as on a real hand.
+        // Base inside the palm, direction from straight up (clockwise positive) fanned and
+        // together, length to the tip's centre. Widths ~ 1/6 of the hand's height, as on a
+        // real hand; together, neighbouring fingers touch.
         constexpr std::array<Finger, 5> spec{{
-            {0.17, 0.14, 1.25, 0.34, 0.088},      // thumb
-            {0.12, -0.05, 0.46, 0.50, 0.086},     // index
-            {0.03, -0.10, 0.06, 0.54, 0.088},     // middle
-            {-0.075, -0.08, -0.34, 0.50, 0.084},  // ring
-            {-0.16, -0.01, -0.76, 0.40, 0.076},   // little
+            {0.17, 0.14, 1.25, 0.55, 0.34, 0.088},       // thumb
+            {0.12, -0.05, 0.46, 0.12, 0.50, 0.086},      // index
+            {0.03, -0.10, 0.06, 0.03, 0.54, 0.088},      // middle
+            {-0.075, -0.08, -0.34, -0.06, 0.50, 0.084},  // ring
+            {-0.16, -0.01, -0.76, -0.17, 0.40, 0.076},   // little
         }};
+        // A fist: the fingers' last two joints folded behind the palm leave a quarter of their
+        // length, the thumb lies across the palm's lower half.
+        constexpr double fist_length = 0.25;
+        constexpr double fist_thumb_angle = -1.2;
+        constexpr double fist_thumb_length = 0.28;
+        spread = std::clamp(spread, -1.0, 1.0);
+        const double open = std::max(spread, 0.0);
+        const double curl = std::max(-spread, 0.0);
         for (std::size_t i = 0; i < spec.size(); ++i) {
             const Finger& f = spec[i];
+            double angle = f.fanned + (f.together - f.fanned) * (1.0 - open);  // exact at 1
+            double length = f.length * (1.0 - (1.0 - fist_length) * curl);
+            if (i == 0) {
+                angle += (fist_thumb_angle - f.together) * curl;
+                length = f.length + (fist_thumb_length - f.length) * curl;
+            }
             const cv::Point2d base(f.x, f.y);
-            const cv::Point2d dir(std::sin(f.angle), -std::cos(f.angle));
-            fingers[i] = Capsule{base, base + dir * f.length, f.radius};
+            const cv::Point2d dir(std::sin(angle), -std::cos(angle));
+            fingers[i] = Capsule{base, base + dir * length, f.radius};
         }
     }
 
@@ -157,11 +175,14 @@ Sprite make_sphere(const Colour& colour) {
     return s;
 }
 
-Sprite make_hand(const Colour& colour) {
-    const HandShape raw;
+Sprite make_hand(const Colour& colour, double spread) {
+    // Every spread in the fanned hand's units: the same hand, not one rescaled to its height.
+    const HandShape fanned;
+    const cv::Rect2d f = fanned.bounds();
+    const cv::Point2d centre(f.x + f.width / 2, f.y + f.height / 2);
+    const double unit = f.height;
+    const HandShape raw(spread);
     const cv::Rect2d b = raw.bounds();
-    const cv::Point2d centre(b.x + b.width / 2, b.y + b.height / 2);
-    const double unit = b.height;
     auto distance = [&](cv::Point2d p) { return raw.distance(p * unit + centre) / unit; };
     // Evenly coloured; slightly brighter toward the fingertips (light from above) and a
     // little darker right at the outline, where a real hand curves away.
@@ -169,7 +190,8 @@ Sprite make_hand(const Colour& colour) {
         const double rim = 1 - 0.08 * (1 - smoothstep(0, 0.03, -d));
         return scaled(colour, (1 - 0.05 * p.y) * rim);
     };
-    const cv::Rect2d extent((b.x - centre.x) / unit, (b.y - centre.y) / unit, b.width / unit, 1);
+    const cv::Rect2d extent((b.x - centre.x) / unit, (b.y - centre.y) / unit, b.width / unit,
+                            b.height / unit);
     Sprite s = sample(extent, distance, shade);
     s.rotates = true;
     s.wrist = (raw.wrist.b - centre) / unit;
@@ -179,25 +201,27 @@ Sprite make_hand(const Colour& colour) {
 
 }  // namespace
 
-Sprite make_sprite(Target target, const Colour& colour) {
+Sprite make_sprite(Target target, const Colour& colour, double spread) {
     switch (target) {
         case Target::sphere:
             return make_sphere(colour);
         case Target::hand:
-            return make_hand(colour);
+            return make_hand(colour, spread);
     }
     return make_sphere(colour);
 }
 
-std::shared_ptr<const Sprite> shared_sprite(Target target, const Colour& colour) {
-    using Key = std::tuple<Target, double, double, double>;
+std::shared_ptr<const Sprite> shared_sprite(Target target, const Colour& colour, double spread) {
+    using Key = std::tuple<Target, double, double, double, double>;
     static std::mutex mutex;
     static std::map<Key, std::shared_ptr<const Sprite>> cache;
-    const Key key{target, colour.b, colour.g, colour.r};
+    const Key key{target, colour.b, colour.g, colour.r, target == Target::hand ? spread : 1.0};
     const std::lock_guard lock(mutex);
     if (const auto it = cache.find(key); it != cache.end()) return it->second;
-    if (cache.size() >= 32) cache.clear();  // bounded, for callers that sweep colours
-    auto sprite = std::make_shared<const Sprite>(make_sprite(target, colour));
+    // Bounded, for callers that sweep colours; a hand that moves its fingers takes
+    // 2 spread_levels + 1.
+    if (cache.size() >= 128) cache.clear();
+    auto sprite = std::make_shared<const Sprite>(make_sprite(target, colour, spread));
     cache.emplace(key, sprite);
     return sprite;
 }

@@ -28,11 +28,17 @@ struct Sprite {
     double wrist_radius = 0;
 };
 
-Sprite make_sprite(Target target, const Colour& colour);
+// spread: the hand's fingers fanned (1), side by side (0), curled into a fist (-1), and between;
+// the sphere has none.
+Sprite make_sprite(Target target, const Colour& colour, double spread = 1.0);
 
-// make_sprite, remembered: renderers of the same target and colour share one sprite (tests
-// build many renderers, and a hand's texture takes ~10 ms). Thread-safe.
-std::shared_ptr<const Sprite> shared_sprite(Target target, const Colour& colour);
+// make_sprite, remembered: renderers of the same target, colour and spread share one sprite
+// (tests build many renderers, and a hand's texture takes ~10 ms). Thread-safe.
+std::shared_ptr<const Sprite> shared_sprite(Target target, const Colour& colour,
+                                            double spread = 1.0);
+
+// A hand whose fingers move is drawn at the nearest of 2 spread_levels + 1 spreads from -1 to 1.
+constexpr int spread_levels = 16;
 
 Colour default_colour(Target target, Background background);
 

@@ -168,6 +168,7 @@ Pose Trajectory::keyframed(double t) const {
     pose.y = hermite(keys, w, &Keyframe::y);
     pose.depth = std::max(hermite(keys, w, &Keyframe::depth), 1e-3);
     pose.angle = rotates_ ? hermite(keys, w, &Keyframe::angle) : 0;
+    pose.spread = std::clamp(hermite(keys, w, &Keyframe::spread), -1.0, 1.0);
     return pose;
 }
 

@@ -14,8 +14,9 @@ namespace raypoint::scene {
 struct Pose {
     double x = 0;  // centre, fractions of the frame's width and height
     double y = 0;
-    double depth = 0;  // m
-    double angle = 0;  // rad, clockwise on screen
+    double depth = 0;   // m
+    double angle = 0;   // rad, clockwise on screen
+    double spread = 1;  // a hand's fingers, Keyframe::spread
 };
 
 class Trajectory {

@@ -177,6 +177,7 @@ class ClickMachine {
     // been still (within start_rise of still_scale_).
     cv::Point2d held_at_;
     bool held_jump_ = false;  // the hold began on the frame the rise jumped from the baseline
+    bool travelled_ = false;  // RISING: the travel passed half of push_travel (travel_hold_seconds)
     double still_scale_ = 0.0;
     Timestamp still_since_ = 0;
     // HOLDING: the still size before still_scale_ when the size jumped away from it (0 when it

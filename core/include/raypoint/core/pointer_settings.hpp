@@ -148,6 +148,15 @@ struct ClickSettings {
     // flicker past it for a frame is still the region's, while most of a swipe whose every
     // frame is a step taken out (several times it) counts. 0: the travel counts all of it.
     double push_region_jump = 0.4;
+    // A rise whose travel has passed half of push_travel is held this long instead, when longer:
+    // the smoothed position shows a sideways travel several frames after the centroid made it,
+    // and a hand opening from a fist (sqrt(area) +45% in 0.2-0.5 s, the fingers carrying the
+    // centroid toward them) pressed before its travel reached push_travel. A push toward the
+    // camera barely moves its centroid and presses as before. On the gesture set, seeds 1-5 and
+    // 8-10: false clicks 36 to 3 in 118 minutes of non-push motion (fist 32 to 2), target
+    // pushes the same; seeds 11, 13, 14: 9 to 1, 4 of 528 target pushes fewer
+    // (docs/clicks.md). 0: off.
+    double travel_hold_seconds = 0.07;
     // A push grows on every frame: while rising, sqrt(area) may fall at most this far
     // (relative) under its largest since the push began; farther, the rise was the bob of a
     // step or a wobble, not a push. 0: off.

@@ -32,6 +32,7 @@ struct Keyframe {
     double y = 0;
     double depth = 0;
     double angle = 0;
+    double spread = 1;  // a hand's fingers: fanned (1), side by side (0), a fist (-1)
 };
 
 // The target stands exactly still on its path over [start, start + seconds]; it slows down
