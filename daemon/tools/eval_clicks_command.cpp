@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -34,8 +35,9 @@ struct EvalOptions {
     std::uint32_t seed = 1;
     int jobs = 1;
     bool sweep = false;
-    std::string plot;       // PNG of the sweep
-    std::string write_dir;  // the rendered set as videos with their truth files
+    std::string plot;        // PNG of the sweep
+    std::string write_dir;   // the rendered set as videos with their truth files
+    std::string photos_dir;  // --backgrounds: the set in front of these photographs
     // The tracker's results of each rendered clip, kept in DIR/NAME.results and read back while
     // the file exists (remove them after changing tracking settings or the tracker): a sweep
     // of the click settings on the same tracking, in seconds.
@@ -114,6 +116,8 @@ EvalOptions parse_eval_options(std::span<const std::string_view> args) {
             options.cache_dir = std::string(option_value(args, i));
         } else if (arg == "--write") {
             options.write_dir = std::string(option_value(args, i));
+        } else if (arg == "--backgrounds") {
+            options.photos_dir = std::string(option_value(args, i));
         } else if (arg.starts_with("-") && arg.size() > 1) {
             throw UsageError(std::string(arg) + ": unknown option (see raypoint --help)");
         } else {
@@ -220,8 +224,11 @@ std::vector<TrackedClip> track_all(const std::vector<scene::GestureClip>& set,
             const auto index = static_cast<std::size_t>(i);
             try {
                 if (index < set.size()) {
-                    tracked[index] = cached_track(set[index], settings, options.cache_dir,
-                                                  options.set, options.seed);
+                    // In front of photographs the clips are not the set's: their own folder.
+                    tracked[index] = cached_track(
+                        set[index], settings, options.cache_dir,
+                        options.photos_dir.empty() ? options.set : options.set + "-photos",
+                        options.seed);
                 } else {
                     const std::string& video = options.clips[index - set.size()];
                     tracked[index] = track_recorded(video, video + ".clicks", settings);
@@ -324,6 +331,29 @@ bool meets(const EvalOptions& options, const Tallies& tallies) {
 
 // `only`: the one clip of that name (--trace), so a clip --misses names can be looked at with
 // `raypoint track --annotate` without rendering the whole set; empty: every clip.
+// The JPEG and PNG files in `dir`, sorted, so that a seed draws the same ones each time.
+std::vector<std::string> photos_in(const std::string& dir) {
+    std::error_code error;
+    std::vector<std::string> photos;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, error)) {
+        std::string extension = entry.path().extension().string();
+        std::transform(extension.begin(), extension.end(), extension.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        if (extension == ".jpg" || extension == ".jpeg" || extension == ".png")
+            photos.push_back(entry.path().string());
+    }
+    if (error) {
+        throw InputError("--backgrounds " + dir + ": cannot list the folder (" + error.message() +
+                         ")");
+    }
+    if (photos.empty()) {
+        throw InputError("--backgrounds " + dir +
+                         ": no photographs there (JPEG or PNG files, .jpg .jpeg .png)");
+    }
+    std::sort(photos.begin(), photos.end());
+    return photos;
+}
+
 void write_set(const std::vector<scene::GestureClip>& set, const std::string& dir,
                const std::string& only) {
     std::filesystem::create_directories(dir);
@@ -354,9 +384,11 @@ int eval_clicks_command(std::span<const std::string_view> args) {
             throw InputError(clip + ".clicks: no click truth beside the clip");
     }
     cv::setNumThreads(1);
-    const std::vector<scene::GestureClip> set = options.set == "none"
-                                                    ? std::vector<scene::GestureClip>{}
-                                                    : scene::gesture_set(options.set, options.seed);
+    std::vector<scene::GestureClip> set = options.set == "none"
+                                              ? std::vector<scene::GestureClip>{}
+                                              : scene::gesture_set(options.set, options.seed);
+    if (!options.photos_dir.empty())
+        scene::use_photos(set, photos_in(options.photos_dir), options.seed);
     if (!options.write_dir.empty()) {
         write_set(set, options.write_dir, options.trace);
         return 0;
@@ -372,8 +404,10 @@ int eval_clicks_command(std::span<const std::string_view> args) {
                          ": no clip of that name (--misses names them, such as push-006)");
     }
     const std::vector<TrackedClip> tracked = track_all(set, options, config.core);
-    std::printf("# raypoint eval-clicks: gesture set '%s' (seed %u), %zu recorded clips\n\n",
-                options.set.c_str(), options.seed, options.clips.size());
+    std::printf("# raypoint eval-clicks: gesture set '%s' (seed %u)%s%s, %zu recorded clips\n\n",
+                options.set.c_str(), options.seed,
+                options.photos_dir.empty() ? "" : " in front of the photographs in ",
+                options.photos_dir.c_str(), options.clips.size());
     const Tallies tallies = score_all(tracked, config.core.pointer, config.core.output,
                                       options.misses ? stderr : nullptr, options.trace);
     print_tallies(stdout, tallies);

@@ -10,6 +10,11 @@ raypoint=$1
 . "$(dirname "$0")/common.sh"
 
 expect_error 2 "--trace nosuch: no clip of that name" eval-clicks --set-name ci --trace nosuch
+mkdir -p "$work/no-photos"
+expect_error 1 "--backgrounds $work/no-photos: no photographs there" \
+  eval-clicks --set-name ci --backgrounds "$work/no-photos"
+expect_error 1 "--backgrounds $work/missing: cannot list the folder" \
+  eval-clicks --set-name ci --backgrounds "$work/missing"
 
 timeout 240 "$raypoint" eval-clicks --set-name ci --jobs 2 --trace push-000 \
   > "$work/out.txt" 2> "$work/err.txt" || fail "eval-clicks --trace exited $?"

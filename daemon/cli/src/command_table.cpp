@@ -82,6 +82,7 @@ constexpr std::array bench_options{
 constexpr std::array eval_clicks_options{
     OptionSpec{"--set-name", "full|ci|none", "the gesture set (default full)"},
     OptionSpec{"--seed", "N", "the set's seed (default 1)"},
+    OptionSpec{"--backgrounds", "DIR", "the set in front of the JPEG and PNG photographs in DIR"},
     OptionSpec{"--jobs", "N", "clips tracked at once (default 1)"},
     OptionSpec{"--sweep", "", "also sweep the click settings (a table)"},
     OptionSpec{"--plot", "OUT.png", "the sweep, plotted"},

@@ -65,6 +65,8 @@ const char* background_name(Background background) {
             return "skin_wall";
         case Background::desk:
             return "desk";
+        case Background::photo:
+            return "photo";
     }
     return "white";
 }

@@ -60,6 +60,9 @@ struct Renderer::Assets {
             case Background::desk:
                 background = make_desk(size, seed);
                 break;
+            case Background::photo:
+                background = make_photo(size, spec.background_photo, seed);
+                break;
         }
         cv::Mat vignette3;
         cv::merge(std::vector<cv::Mat>{vignette, vignette, vignette}, vignette3);

@@ -69,6 +69,12 @@ inline constexpr double approach_press_seconds = 0.3;
 // Throws std::invalid_argument for another name.
 std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed = 1);
 
+// The same clips in front of photographs (image files OpenCV reads): each clip's background is
+// one of `photos`, chosen by the seed and the clip's place in the set; their condition
+// "background" is "photo". Throws std::invalid_argument when `photos` is empty.
+void use_photos(std::vector<GestureClip>& clips, const std::vector<std::string>& photos,
+                std::uint32_t seed);
+
 // The truth file beside a clip: one line a gesture,
 // "click|drag|right|double|scroll_up|scroll_down START PRESS RELEASE [DEPTH SECONDS]", and "motion
 // FROM TO" for a span of non-push motion; '#' starts a comment.

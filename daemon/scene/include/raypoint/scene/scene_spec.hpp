@@ -20,6 +20,7 @@ enum class Background {
     cluttered,  // a procedural room (shelves, furniture, posters, textures), fixed by the seed
     skin_wall,  // a wall painted warm beige or pink, near a skin's colour, with a few things on it
     desk,       // a wooden desk seen from above: planks, soft grain, warm tones, a few things
+    photo,      // SceneSpec::background_photo, scaled to cover the frame, cropped by the seed
 };
 
 // A point of an explicit path. x, y: the target's centre as fractions of the frame's width and
@@ -53,7 +54,8 @@ struct SceneSpec {
     std::string name;
     Target target = Target::sphere;
     Background background = Background::plain;
-    int width = 640;  // pixels
+    std::string background_photo;  // Background::photo: an image file OpenCV reads
+    int width = 640;               // pixels
     int height = 480;
     double fps = 30;
     double seconds = 6.0;
