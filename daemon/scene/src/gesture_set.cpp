@@ -373,38 +373,4 @@ std::vector<GestureClip> gesture_set(std::string_view name, std::uint32_t seed) 
     return clips;
 }
 
-void use_photos(std::vector<GestureClip>& clips, const std::vector<std::string>& photos,
-                std::uint32_t seed) {
-    if (photos.empty()) throw std::invalid_argument("use_photos: no photographs");
-    for (std::size_t i = 0; i < clips.size(); ++i) {
-        SceneSpec& s = clips[i].spec;
-        Rng rng(mix_seed(seed, 9000 + static_cast<std::uint64_t>(i)));
-        s.background = Background::photo;
-        s.background_photo = photos[rng.next() % photos.size()];
-        for (auto& [condition, value] : clips[i].conditions) {
-            if (condition == "background") value = "photo";
-        }
-    }
-}
-
-std::string click_truth_text(const GestureClip& clip) {
-    std::string text = "# " + clip.spec.name + ": kind start press release depth seconds\n";
-    char line[160];
-    for (const IntendedClick& c : clip.clicks) {
-        std::snprintf(line, sizeof line, "%s %.3f %.3f %.3f %.3f %.3f\n",
-                      std::string(to_string(c.kind)).c_str(), c.start, c.press, c.release, c.depth,
-                      c.seconds);
-        text += line;
-    }
-    for (const auto& [from, to] : clip.motion_spans) {
-        std::snprintf(line, sizeof line, "motion %.3f %.3f\n", from, to);
-        text += line;
-    }
-    for (const auto& [from, to] : clip.approaches) {
-        std::snprintf(line, sizeof line, "approach %.3f %.3f\n", from, to);
-        text += line;
-    }
-    return text;
-}
-
 }  // namespace raypoint::scene
