@@ -117,6 +117,11 @@ const std::vector<Key>& schema() {
                 "refined: a leaked or too large region is estimated again on edges over this (0: "
                 "never)",
                 [](auto& c) -> auto& { return c.core.estimator.weak_edge_threshold; }),
+            real_key(
+                "estimator", "weak_wander", 0.0, 160.0,
+                "refined: a region whose inner point moved more working pixels than this in one "
+                "estimate is estimated again on the weaker edges (0: never)",
+                [](auto& c) -> auto& { return c.core.estimator.weak_wander; }),
             integer_key(
                 "estimator", "diagonal_tolerance", 0, 765,
                 "refined fill: step diagonally between pixels of colours this close (0: never)",

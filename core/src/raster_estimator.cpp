@@ -104,20 +104,29 @@ double RasterEstimator::block_area() const noexcept {
 // EstimatorSettings::weak_edge_threshold: an outline with gaps at the edge threshold may be
 // whole on the weaker edges. The first estimate stands when the second leaks too, or is no
 // target's size; the fill growth reference is then the first's, as if there was no second.
+// A region that ran out through a gap into a closed region beyond (a wall between shelves)
+// neither leaks nor grows past a target's size, but its centroid, and with it the inner point,
+// moves into what lies beyond (weak_wander): the second is taken then only where it holds the
+// inner point, so a region that wanders on the weaker edges too does not replace the first.
 Estimate RasterEstimator::estimate(const cv::Mat& edges, cv::Point2f inner) noexcept {
     const std::size_t reference = last_fill_;
     const Estimate first = estimate_on(edges, inner);
     if (settings_.weak_edge_threshold <= 0 || magnitude_.image == nullptr ||
-        settings_.area_mode != AreaMode::refined ||
-        (!first.leaked && first.area <= magnitude_.largest)) {
+        settings_.area_mode != AreaMode::refined) {
         return first;
     }
+    const auto wandered = [&](const Estimate& e) {
+        return settings_.weak_wander > 0.0 && cv::norm(e.inner - inner) > settings_.weak_wander;
+    };
+    const bool failed = first.leaked || first.area > magnitude_.largest;
+    if (!failed && !wandered(first)) return first;
     const cv::Mat* weak = weak_edges(edges);
     if (weak == nullptr) return first;
     const std::size_t first_fill = last_fill_;
     last_fill_ = reference;
     const Estimate second = estimate_on(*weak, inner);
-    if (!second.leaked && second.area >= magnitude_.smallest && second.area <= magnitude_.largest) {
+    if (!second.leaked && second.area >= magnitude_.smallest && second.area <= magnitude_.largest &&
+        (failed || !wandered(second))) {
         return second;
     }
     last_fill_ = first_fill;

@@ -14,6 +14,7 @@ Settings paper_settings() {
     settings.estimator.area_mode = AreaMode::blocks;
     settings.estimator.extremity = 0.0;
     settings.estimator.weak_edge_threshold = 0;
+    settings.estimator.weak_wander = 0.0;
     settings.estimator.diagonal_tolerance = 0;
     settings.estimator.fill_growth = 0.0;
     settings.estimator.neck_radius = 0;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The raster estimator's region where an outline is not whole: a limb crossing the image border
 // (EstimatorSettings::extremity, extremity_contact) and an outline with a gap at the edge
-// threshold (weak_edge_threshold), on drawn edge images.
+// threshold (weak_edge_threshold, weak_wander), on drawn edge images.
 
 #include <cmath>
 #include <cstdint>
@@ -144,20 +144,81 @@ TEST(RasterWeakEdges, ARegionThatRanOutIsEstimatedAgainOnTheWeakerEdges) {
     EXPECT_GT(estimator->estimate(edges, {70, 55}).area, largest);
 }
 
-TEST(RasterWeakEdges, AWholeOutlineIsEstimatedOnce) {
-    // Without a leak, or a region too large, the weaker edges are not looked at: a magnitude
-    // that would cut the disk in two changes nothing.
-    const test::Shape disk = test::disk();
-    cv::Mat magnitude = disk.edges * 150;
+// The disk's outline at 150 with a line across its middle at 60: on the weaker edges it is two
+// half disks.
+cv::Mat disk_cut_across_magnitude() {
+    cv::Mat magnitude = test::disk().edges * 150;
     cv::line(magnitude, {63, 60}, {97, 60}, cv::Scalar(60));
+    return magnitude;
+}
+
+// One estimate from `inner` on the magnitude's edges over the default edge threshold (96), with
+// the weaker edges at their default (40) and a target's size 1-60% of the frame.
+Estimate estimate_on(const cv::Mat& magnitude, cv::Point2f inner, double weak_wander) {
     cv::Mat edges;
     cv::threshold(magnitude, edges, 96, 0, cv::THRESH_TOZERO);
     EstimatorSettings settings;
+    settings.weak_wander = weak_wander;
     auto estimator = make_estimator(settings);
     estimator->use_magnitude({&magnitude, 0.01 * 19200, 0.6 * 19200});
-    const Estimate e = estimator->estimate(edges, {70, 55});
+    return estimator->estimate(edges, inner);
+}
+
+TEST(RasterWeakEdges, AWholeOutlineIsEstimatedOnce) {
+    // Without a leak, or a region too large, the weaker edges are not looked at: a magnitude
+    // that would cut the disk in two changes nothing.
+    const Estimate e = estimate_on(disk_cut_across_magnitude(), {70, 55}, 16.0);
     EXPECT_FALSE(e.leaked);
+    EXPECT_LE(std::abs(area_error(e, test::disk().area)), 0.05) << e.area;
+}
+
+// The disk with a wall above it: a closed region of the wall's outline (shelves all round) that
+// the disk's outline touches along its top, where 9 px of it are at 60, a gap at the default
+// edge threshold. Through the gap the region takes in the wall, 3 times the disk's size: no
+// leak, no size too large, but its centroid is the wall's.
+cv::Mat disk_under_wall_magnitude() {
+    const test::Shape disk = test::disk();
+    cv::Mat wall_mask = cv::Mat::zeros(120, 160, CV_8U);
+    cv::rectangle(wall_mask, cv::Rect(20, 2, 120, 38), 1, cv::FILLED);
+    const test::Shape wall = test::outline(wall_mask);
+    cv::Mat magnitude = (disk.edges | wall.edges) * 150;
+    magnitude(cv::Rect(76, 37, 9, 5)).setTo(60, magnitude(cv::Rect(76, 37, 9, 5)) > 0);
+    return magnitude;
+}
+
+TEST(RasterWeakEdges, ARegionWhoseInnerPointWanderedIsEstimatedAgain) {
+    const test::Shape disk = test::disk();
+    const cv::Mat magnitude = disk_under_wall_magnitude();
+    // Never looked at again: the region is the disk and the wall.
+    const Estimate merged = estimate_on(magnitude, {80, 60}, 0.0);
+    EXPECT_FALSE(merged.leaked);
+    EXPECT_GT(merged.area, 2.0 * disk.area);
+    EXPECT_GT(cv::norm(merged.inner - cv::Point2f(80, 60)), 24.0F);
+
+    const Estimate e = estimate_on(magnitude, {80, 60}, 16.0);
+    EXPECT_LE(centroid_error(e, disk.centroid), 0.5);
     EXPECT_LE(std::abs(area_error(e, disk.area)), 0.05) << e.area;
+}
+
+TEST(RasterWeakEdges, AnInnerPointMovingWithItsTargetIsEstimatedOnce) {
+    // The disk whole, its inner point 12 px from its centre (a hand that moved that far since
+    // the last frame): the estimate moves it less than weak_wander, and the weaker edges, which
+    // would cut the disk in two, are not looked at.
+    const Estimate e = estimate_on(disk_cut_across_magnitude(), {72, 51}, 16.0);
+    EXPECT_LE(std::abs(area_error(e, test::disk().area)), 0.05) << e.area;
+}
+
+TEST(RasterWeakEdges, AWeakerEstimateThatWandersTooIsNotTaken) {
+    // The gap under the wall stays open on the weaker edges (30), which only cut the wall across
+    // at y = 12: the second region is the disk and the wall's lower part, its inner point gone
+    // 25 px into the wall. No better than the first: the first stands.
+    cv::Mat magnitude = disk_under_wall_magnitude();
+    magnitude(cv::Rect(76, 37, 9, 5)).setTo(30, magnitude(cv::Rect(76, 37, 9, 5)) > 0);
+    cv::line(magnitude, {21, 12}, {138, 12}, cv::Scalar(60));
+    const Estimate first = estimate_on(magnitude, {80, 60}, 0.0);
+    const Estimate e = estimate_on(magnitude, {80, 60}, 16.0);
+    EXPECT_GT(cv::norm(e.inner - cv::Point2f(80, 60)), 16.0F);
+    EXPECT_DOUBLE_EQ(e.area, first.area);
 }
 
 }  // namespace
