@@ -294,8 +294,13 @@ void score_clip(const TrackedClip& clip, const core::PointerSettings& settings,
             groups.push_back("push " + bin(click.seconds, {0.15, 0.3, 0.6, 0.8}, " s"));
             // The pushes the targets are stated for: at least 15% closer within 0.6 s.
             if (click.depth >= scene::target_push_depth &&
-                click.seconds <= scene::target_push_seconds)
+                click.seconds <= scene::target_push_seconds) {
                 groups.push_back("target");
+                // The same pushes by what is pushed: a hand and a ball miss for different
+                // reasons (a ball's shaded side against dark furniture has no edge).
+                for (const auto& [key, value] : clip.conditions)
+                    if (key == "target") groups.push_back("target (" + value + ")");
+            }
         }
         const bool drag = click.kind == scene::GestureKind::drag;
         std::optional<std::size_t> found;

@@ -1,7 +1,8 @@
 #!/bin/bash
 # SPDX-License-Identifier: MIT
 # raypoint eval-clicks --trace end to end on the CI gesture subset: one header and one line a
-# frame for the clip named, in the documented columns, with the presses that went out; a name
+# frame for the clip named, in the documented columns, with the presses that went out; the
+# target pushes and gestures split by hand and ball, adding up; a name
 # that is no clip answered with one line on stderr before anything is tracked. Then a recorded
 # clip with its truth file: motion and approach spans scored as docs/clicks.md says.
 # usage: test_eval_clicks_cli.sh RAYPOINT
@@ -32,6 +33,22 @@ bad=$(grep -Evc "$pattern" "$work/frames.txt")
 [ "$bad" -eq 0 ] || fail "$bad lines do not match the columns, e.g. $(grep -Ev "$pattern" "$work/frames.txt" | head -1)"
 awk 'NR > 1 && $1 <= last { bad = 1 } { last = $1 } END { exit bad }' "$work/frames.txt" ||
   fail "times do not increase"
+# The target pushes and each gesture by what makes them: the subset holds hands and balls, and
+# a split's rows add up to the whole, count and recognised alike.
+count() { grep -F "| $1 |" "$work/out.txt" | cut -d'|' -f3 | tr -d ' '; }
+found() { grep -F "| $1 |" "$work/out.txt" | cut -d'|' -f4 | sed -E 's/.*\(([0-9]+)\/.*/\1/'; }
+for row in target scroll; do
+  hand=$(count "$row (hand)")
+  sphere=$(count "$row (sphere)")
+  [ -n "$hand" ] && [ -n "$sphere" ] || fail "no '$row (hand)' and '$row (sphere)' rows"
+  [ "$((${hand:-0} + ${sphere:-0}))" -eq "$(count "$row")" ] ||
+    fail "$row: hand $hand + sphere $sphere is not $(count "$row")"
+  hand=$(found "$row (hand)")
+  sphere=$(found "$row (sphere)")
+  [ "$((${hand:-0} + ${sphere:-0}))" -eq "$(found "$row")" ] ||
+    fail "$row: the split's pressed or recognised do not add up"
+done
+grep -Eq '^\| [a-z ]+ \((hand|sphere)\) \| 0 \|' "$work/out.txt" && fail "a split row with no gesture"
 grep -q ' pressed +left$' "$work/frames.txt" || fail "no left press in push-000's trace"
 grep -q ' -left$' "$work/frames.txt" || fail "no left release in push-000's trace"
 
@@ -52,6 +69,8 @@ grep -Eq '^\| all \|.*\| 0 \| - \|$' "$work/approach.txt" ||
   fail "expected no false click: $(grep '^| all' "$work/approach.txt")"
 grep -q '^| approaches as fast as a push in non-push motion, pressed | 1 | 100.0% (1/1) |' \
   "$work/approach.txt" || fail "expected the approach pressed: $(grep approach "$work/approach.txt")"
+grep -Eq '\((hand|sphere)\) \|' "$work/approach.txt" &&
+  fail "a recorded clip says nothing of its target, yet split rows: $(grep -E '\((hand|sphere)\)' "$work/approach.txt")"
 printf 'approach 5 4\n' > "$clip.clicks"
 expect_error 1 "approach: expected FROM TO in seconds, FROM < TO" eval-clicks --set-name none "$clip"
 
