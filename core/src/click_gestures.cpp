@@ -47,10 +47,12 @@ void ClickMachine::follow_stillness() noexcept {
     // A region that takes in a piece for a few frames and drops it again (or drops one and
     // takes it back) changes shape, not depth: back at the size it jumped away from, the target
     // has been still since it was still there. A push comes closer and goes back gradually, so
-    // a size it moved away from without a jump is not one to come back to.
-    const bool back =
-        other_scale_ > 0.0 && std::abs(peak_held_ / other_scale_ - 1.0) <= settings_.hold_rise;
+    // a size it moved away from without a jump is one to come back to only by a jump: a region
+    // that creeps into a piece over half a second and drops it in one frame (5-6% of sqrt(area)
+    // on the gesture set's held hands) changed shape too.
     const bool jumped = seconds_since(jumped_at_) <= settings_.hold_flicker_seconds;
+    const bool back = other_scale_ > 0.0 && (!other_crept_ || jumped) &&
+                      std::abs(peak_held_ / other_scale_ - 1.0) <= settings_.hold_rise;
     const Timestamp left_since = still_since_;
     if (back) {
         still_since_ = std::min(left_since, other_since_);
@@ -59,7 +61,8 @@ void ClickMachine::follow_stillness() noexcept {
         other_since_ = left_since;
         still_since_ = now_;
     }
-    other_scale_ = jumped || back ? still_scale_ : 0.0;
+    other_crept_ = !jumped && !back;
+    other_scale_ = still_scale_;
     still_scale_ = peak_held_;
     level_since_ = now_;
 }

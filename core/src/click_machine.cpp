@@ -186,6 +186,7 @@ void ClickMachine::confirm() noexcept {
         still_scale_ = scale_;
         still_since_ = now_;
         other_scale_ = 0.0;
+        other_crept_ = false;
         other_since_ = now_;
         jumped_at_ = 0;
         level_since_ = now_;

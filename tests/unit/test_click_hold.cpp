@@ -73,6 +73,34 @@ TEST(ClickHold, ASizeLeftGraduallyIsNoSizeToComeBackTo) {
     // clang-format on
 }
 
+TEST(ClickHold, ASizeCreptAwayFromAndJumpedBackToIsStillTheHold) {
+    // At 30 fps the held push's region creeps 4% larger over a few frames (each under the jump
+    // of 3% a frame: the region taking in a piece bit by bit, or the hand) and snaps back to the
+    // size it was pressed at in one frame. That jump is the region dropping what it crept into:
+    // still since 0.5 s, at that size 0.2 s from 0.767 s, right click. A size left gradually and
+    // come back to gradually is no hold (the test above); without the jump, the stillness
+    // would count from 0.767 s and the pull-back at 1.033 s would left-click.
+    PointerController pointer = pressed(test::gesture_pointer());
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x      y      size    click            out
+        { 533,   T,       0.500, 0.500, 0.2525, "holding",       ""},
+        { 567,   T,       0.500, 0.500, 0.2550, "holding",       ""},
+        { 600,   T,       0.500, 0.500, 0.2580, "holding",       ""},   // +3.2%: left, crept
+        { 633,   T,       0.500, 0.500, 0.2600, "holding",       ""},
+        { 667,   T,       0.500, 0.500, 0.2595, "holding",       ""},
+        { 700,   T,       0.500, 0.500, 0.2500, "holding",       ""},   // -3.7%: a jump
+        { 733,   T,       0.500, 0.500, 0.2500, "holding",       ""},
+        { 767,   T,       0.500, 0.500, 0.2500, "holding",       ""},   // the peak gone: back
+        { 800,   T,       0.500, 0.500, 0.2500, "holding",       ""},
+        { 867,   T,       0.500, 0.500, 0.2500, "holding",       ""},
+        { 933,   T,       0.500, 0.500, 0.2500, "holding",       ""},
+        {1000,   T,       0.500, 0.500, 0.2500, "right_armed",   ""},
+        {1033,   T,       0.500, 0.500, 0.2150, "refractory",    "+right -right"},
+    });
+    // clang-format on
+}
+
 TEST(ClickHold, APushComingBackPastTheSizeItJumpedFromIsNotHeldThere) {
     // Held at 0.250, the region jumps to 0.280 and the hand holds there; coming back, the size
     // passes 0.250 for one frame. That size was still since 0.5 s, but a return must stay 0.2 s

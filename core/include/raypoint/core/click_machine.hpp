@@ -180,12 +180,13 @@ class ClickMachine {
     bool travelled_ = false;  // RISING: the travel passed half of push_travel (travel_hold_seconds)
     double still_scale_ = 0.0;
     Timestamp still_since_ = 0;
-    // HOLDING: the still size before still_scale_ when the size jumped away from it (0 when it
-    // moved away gradually, as a push does), and since when the target has been still at one of
-    // the two; when the size came to still_scale_; the last frame on which it jumped by more
-    // than hold_rise.
+    // HOLDING: the still size before still_scale_, and since when the target has been still at
+    // one of the two; whether the size left it gradually (as a push does: only a jump comes
+    // back to it); when the size came to still_scale_; the last frame on which it jumped by
+    // more than hold_rise.
     double other_scale_ = 0.0;
     Timestamp other_since_ = 0;
+    bool other_crept_ = false;
     Timestamp level_since_ = 0;
     Timestamp jumped_at_ = 0;
     // HOLDING: the largest size within hold_flicker_seconds, as a peak held until that long
