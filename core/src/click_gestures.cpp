@@ -43,15 +43,20 @@ void ClickMachine::follow_stillness() noexcept {
     const double frames = std::max(1.0, seconds_since(last_frame_) * 30.0);
     if (last_scale_ > 0.0 && std::abs(scale_ / last_scale_ - 1.0) > settings_.hold_rise * frames)
         jumped_at_ = now_;
+    // A step: more than hold_rise from the frame before, whatever the interval. Only to come
+    // back to a size the region crept from: at 10 fps its 5% snap back is under a jump.
+    if (last_scale_ > 0.0 && std::abs(scale_ / last_scale_ - 1.0) > settings_.hold_rise)
+        stepped_at_ = now_;
     if (std::abs(peak_held_ / still_scale_ - 1.0) <= settings_.hold_rise) return;
     // A region that takes in a piece for a few frames and drops it again (or drops one and
     // takes it back) changes shape, not depth: back at the size it jumped away from, the target
     // has been still since it was still there. A push comes closer and goes back gradually, so
-    // a size it moved away from without a jump is one to come back to only by a jump: a region
+    // a size it moved away from without a jump is one to come back to only by a step: a region
     // that creeps into a piece over half a second and drops it in one frame (5-6% of sqrt(area)
     // on the gesture set's held hands) changed shape too.
     const bool jumped = seconds_since(jumped_at_) <= settings_.hold_flicker_seconds;
-    const bool back = other_scale_ > 0.0 && (!other_crept_ || jumped) &&
+    const bool stepped = seconds_since(stepped_at_) <= settings_.hold_flicker_seconds;
+    const bool back = other_scale_ > 0.0 && (!other_crept_ || stepped) &&
                       std::abs(peak_held_ / other_scale_ - 1.0) <= settings_.hold_rise;
     const Timestamp left_since = still_since_;
     if (back) {

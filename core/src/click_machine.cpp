@@ -189,6 +189,7 @@ void ClickMachine::confirm() noexcept {
         other_crept_ = false;
         other_since_ = now_;
         jumped_at_ = 0;
+        stepped_at_ = 0;
         level_since_ = now_;
         peak_held_ = scale_;
         peak_held_at_ = now_;

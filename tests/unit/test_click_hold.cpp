@@ -55,17 +55,17 @@ TEST(ClickHold, ARegionThatTakesInAPieceForAFewFramesWhileHeldIsStill) {
 
 TEST(ClickHold, ASizeLeftGraduallyIsNoSizeToComeBackTo) {
     // The held push comes 5% closer in a frame (under the jump of 9% a frame at 10 fps: the
-    // hand moved, as a push does), holds, and eases back to the size it was pressed at. The
-    // size it left was not jumped from: the stillness counts from the return, and the pull-back
-    // left-clicks.
+    // hand moved, as a push does), holds, and eases back to the size it was pressed at over two
+    // frames, each under hold_rise. Left and come back to gradually: the stillness counts from
+    // the return, and the pull-back left-clicks.
     PointerController pointer = pressed(test::gesture_pointer());
     // clang-format off
     play(pointer, {
         { 600,   T,       0.500, 0.500, 0.262,  "holding",       ""},   // +4.8%
         { 700,   T,       0.500, 0.500, 0.262,  "holding",       ""},
         { 800,   T,       0.500, 0.500, 0.262,  "holding",       ""},
-        { 900,   T,       0.500, 0.500, 0.250,  "holding",       ""},
-        {1000,   T,       0.500, 0.500, 0.250,  "holding",       ""},   // still since here
+        { 900,   T,       0.500, 0.500, 0.256,  "holding",       ""},   // -2.3%
+        {1000,   T,       0.500, 0.500, 0.250,  "holding",       ""},   // -2.3%: still since here
         {1100,   T,       0.500, 0.500, 0.250,  "holding",       ""},
         {1200,   T,       0.500, 0.500, 0.250,  "holding",       ""},
         {1300,   T,       0.500, 0.500, 0.215,  "refractory",    "+left -left"},
@@ -74,11 +74,11 @@ TEST(ClickHold, ASizeLeftGraduallyIsNoSizeToComeBackTo) {
 }
 
 TEST(ClickHold, ASizeCreptAwayFromAndJumpedBackToIsStillTheHold) {
-    // At 30 fps the held push's region creeps 4% larger over a few frames (each under the jump
-    // of 3% a frame: the region taking in a piece bit by bit, or the hand) and snaps back to the
-    // size it was pressed at in one frame. That jump is the region dropping what it crept into:
+    // At 30 fps the held push's region creeps 4% larger over a few frames (each under hold_rise
+    // a frame: the region taking in a piece bit by bit, or the hand) and snaps back to the size
+    // it was pressed at in one frame. That step is the region dropping what it crept into:
     // still since 0.5 s, at that size 0.2 s from 0.767 s, right click. A size left gradually and
-    // come back to gradually is no hold (the test above); without the jump, the stillness
+    // come back to gradually is no hold (the test above); without the step, the stillness
     // would count from 0.767 s and the pull-back at 1.033 s would left-click.
     PointerController pointer = pressed(test::gesture_pointer());
     // clang-format off
@@ -97,6 +97,25 @@ TEST(ClickHold, ASizeCreptAwayFromAndJumpedBackToIsStillTheHold) {
         { 933,   T,       0.500, 0.500, 0.2500, "holding",       ""},
         {1000,   T,       0.500, 0.500, 0.2500, "right_armed",   ""},
         {1033,   T,       0.500, 0.500, 0.2150, "refractory",    "+right -right"},
+    });
+    // clang-format on
+}
+
+TEST(ClickHold, At10FpsAStepBackToASizeCreptFromIsStillTheHold) {
+    // The same at 10 fps: the region creeps 4% larger in two frames and steps back 3.8% in one,
+    // under the 9% a frame that is a jump there (a quick push grows that fast), over hold_rise.
+    // A step back to the size it crept from is the region's too: right click.
+    PointerController pointer = pressed(test::gesture_pointer());
+    // clang-format off
+    play(pointer, {
+        //  ms   tracker  x      y      size    click            out
+        { 600,   T,       0.500, 0.500, 0.2580, "holding",       ""},   // +3.2%: left, crept
+        { 700,   T,       0.500, 0.500, 0.2600, "holding",       ""},
+        { 800,   T,       0.500, 0.500, 0.2500, "holding",       ""},   // -3.8%: a step
+        { 900,   T,       0.500, 0.500, 0.2500, "holding",       ""},   // the peak gone: back
+        {1000,   T,       0.500, 0.500, 0.2500, "holding",       ""},
+        {1100,   T,       0.500, 0.500, 0.2500, "right_armed",   ""},
+        {1200,   T,       0.500, 0.500, 0.2150, "refractory",    "+right -right"},
     });
     // clang-format on
 }

@@ -181,14 +181,15 @@ class ClickMachine {
     double still_scale_ = 0.0;
     Timestamp still_since_ = 0;
     // HOLDING: the still size before still_scale_, and since when the target has been still at
-    // one of the two; whether the size left it gradually (as a push does: only a jump comes
+    // one of the two; whether the size left it gradually (as a push does: only a step comes
     // back to it); when the size came to still_scale_; the last frame on which it jumped by
-    // more than hold_rise.
+    // more than hold_rise per 1/30 s, and the last on which it stepped by more than hold_rise.
     double other_scale_ = 0.0;
     Timestamp other_since_ = 0;
     bool other_crept_ = false;
     Timestamp level_since_ = 0;
     Timestamp jumped_at_ = 0;
+    Timestamp stepped_at_ = 0;
     // HOLDING: the largest size within hold_flicker_seconds, as a peak held until that long
     // after it was seen or a larger one comes (a flicker's large shape comes back within a
     // frame or two), and when it was seen.
