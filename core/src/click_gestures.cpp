@@ -39,14 +39,12 @@ void ClickMachine::follow_stillness() noexcept {
         peak_held_at_ = now_;
     }
     // A jump: more than hold_rise from the frame before, per 1/30 s between them (a quick push
-    // at 10 fps grows 10-25% a frame).
+    // at 10 fps grows 10-25% a frame). A step: more than hold_rise, whatever the interval; only
+    // a step comes back to a size the region crept from (at 10 fps its 5% snap is no jump).
     const double frames = std::max(1.0, seconds_since(last_frame_) * 30.0);
-    if (last_scale_ > 0.0 && std::abs(scale_ / last_scale_ - 1.0) > settings_.hold_rise * frames)
-        jumped_at_ = now_;
-    // A step: more than hold_rise from the frame before, whatever the interval. Only to come
-    // back to a size the region crept from: at 10 fps its 5% snap back is under a jump.
-    if (last_scale_ > 0.0 && std::abs(scale_ / last_scale_ - 1.0) > settings_.hold_rise)
-        stepped_at_ = now_;
+    const double change = last_scale_ > 0.0 ? std::abs(scale_ / last_scale_ - 1.0) : 0.0;
+    if (change > settings_.hold_rise * frames) jumped_at_ = now_;
+    if (change > settings_.hold_rise) stepped_at_ = now_;
     if (std::abs(peak_held_ / still_scale_ - 1.0) <= settings_.hold_rise) return;
     // A region that takes in a piece for a few frames and drops it again (or drops one and
     // takes it back) changes shape, not depth: back at the size it jumped away from, the target
